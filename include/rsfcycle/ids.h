@@ -1,0 +1,32 @@
+#ifndef rsfcycle_ids_h
+#define rsfcycle_ids_h
+
+#include <deal.II/base/types.h>
+
+namespace rsfcycle
+{
+  /**
+   * Boundary ids used by every scene (MODEL.md §1). Scenes set them on the
+   * coarse mesh; the solver reads nothing else about the geometry.
+   *  - surface: traction free;
+   *  - backstop: prescribed velocity v(t) (all components);
+   *  - contact: the base y = 0, u.n = 0 and rate-and-state friction;
+   *  - lateral: 3D side walls, no normal velocity (free slip).
+   */
+  namespace boundary_id
+  {
+    constexpr dealii::types::boundary_id surface  = 0;
+    constexpr dealii::types::boundary_id backstop = 1;
+    constexpr dealii::types::boundary_id contact  = 2;
+    constexpr dealii::types::boundary_id lateral  = 3;
+  } // namespace boundary_id
+
+  /** Material ids: the regions of MODEL.md §5 (density, viscosity). */
+  namespace material_id
+  {
+    constexpr dealii::types::material_id upper = 0;
+    constexpr dealii::types::material_id lower = 1;
+  } // namespace material_id
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,107 @@
+#ifndef rsfcycle_parameters_h
+#define rsfcycle_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace rsfcycle
+{
+  using dealii::ParameterHandler;
+
+  /** Top level: which scene, in which dimension, for how long, where to. */
+  struct RunParameters
+  {
+    unsigned int dimension = 2;
+    std::string  scene     = "wedge";
+    double       end_time  = 1000;
+    std::string  output_directory = "output";
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Subsection "Mesh": refinement toward the seismogenic patch. */
+  struct MeshParameters
+  {
+    unsigned int global_refinements  = 2;
+    unsigned int local_refinements   = 5;
+    double       refinement_distance = 1.5;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Subsection "Time stepping": step doubling (MODEL.md §4.3). */
+  struct TimeSteppingParameters
+  {
+    bool   adaptive     = true;
+    double tolerance    = 1e-5;
+    double initial_step = 1e-2;
+    double minimum_step = 1e-9;
+    double maximum_step = 100;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Subsection "Solver": rate/state coupling, TNNMG, linear correction. */
+  struct SolverParameters
+  {
+    std::string  state_law              = "ageing";
+    std::string  coupling               = "fixed-point";
+    std::string  dynamics               = "dynamic";
+    double       fixed_point_tolerance  = 1e-5;
+    unsigned int max_fixed_point_iterations = 20;
+    std::string  linear_correction      = "direct";
+    double       tnnmg_tolerance        = 1e-10;
+    unsigned int max_tnnmg_iterations   = 100;
+    double       truncation_ratio       = 1e10;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Subsection "Output": snapshots, profiles, events, progress. */
+  struct OutputParameters
+  {
+    double output_interval        = 10;
+    double event_output_interval  = 0.1;
+    double profile_interval       = 1;
+    double event_profile_interval = 0.005;
+    double event_threshold        = 10;
+    double progress_interval      = 10;
+    bool   write_vtu              = true;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** All parameters of a run. */
+  struct Parameters
+  {
+    RunParameters          run;
+    MeshParameters         mesh;
+    TimeSteppingParameters time_stepping;
+    SolverParameters       solver;
+    OutputParameters       output;
+
+    /** Declare every entry, scenes' subsections included. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,124 @@
+#ifndef rsfcycle_scenes_scene_h
+#define rsfcycle_scenes_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <rsfcycle/friction/rate_state.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    using namespace dealii;
+
+    /** Bulk material of one region (material id). */
+    struct Material
+    {
+      double density        = 900;  // [kg/m^3]
+      double shear_viscosity = 1e3; // [Pa s]
+      double bulk_viscosity  = 1e3; // [Pa s]
+    };
+
+    /**
+     * A scene: everything that describes one physical set-up, handed to the
+     * generic solver (ExaDG's split of scenario and solver). The geometry is
+     * given in the rotated frame of MODEL.md §1: the base (boundary id
+     * `contact`) lies in y = 0 and the body above it. Adding a scene never
+     * touches the solver.
+     */
+    template <int dim>
+    class Scene
+    {
+    public:
+      virtual ~Scene() = default;
+
+      /**
+       * The coarse mesh with boundary ids set (ids.h); it is refined by the
+       * solver toward the patch.
+       */
+      virtual void
+      create_coarse_mesh(Triangulation<dim> &tria) const = 0;
+
+      /** Distance of a point to the seismogenic patch [m] (refinement). */
+      virtual double
+      distance_to_patch(const Point<dim> &p) const = 0;
+
+      /** The region (material id) of a cell with the given centre. */
+      virtual types::material_id
+      material_id(const Point<dim> &cell_center) const = 0;
+
+      /** Density and viscosities of a region. */
+      virtual Material
+      material(types::material_id id) const = 0;
+
+      /** Bulk modulus K [Pa] and Poisson ratio nu of the elastic tensor. */
+      virtual std::pair<double, double>
+      elastic_moduli() const = 0;
+
+      /** Body force per unit mass in the rotated frame [m/s^2]. */
+      virtual Tensor<1, dim>
+      gravity() const = 0;
+
+      /** Unit vector "up" of the physical frame, in the rotated frame. */
+      virtual Tensor<1, dim>
+      vertical() const = 0;
+
+      /** Prescribed velocity of the backstop at time t [m/s]. */
+      virtual Tensor<1, dim>
+      backstop_velocity(double t) const = 0;
+
+      /** Rate-and-state parameters of the base at a point of the base. */
+      virtual friction::Parameters
+      friction_parameters(const Point<dim> &p) const = 0;
+
+      /** Cohesion C of the base [Pa]. */
+      virtual double
+      cohesion() const = 0;
+
+      /** The plate convergence rate v0 [m/s] (event threshold, output). */
+      virtual double
+      convergence_rate() const = 0;
+
+      /**
+       * Named surface points where the physical vertical displacement is
+       * recorded every step (rotated frame).
+       */
+      virtual std::vector<std::pair<std::string, Point<dim>>>
+      observation_points() const = 0;
+
+      /**
+       * Coordinate along the base reported in profiles: distance from the
+       * trench along the base [m].
+       */
+      virtual double
+      along_base_coordinate(const Point<dim> &p) const
+      {
+        return p[0];
+      }
+    };
+
+    /** Names of the scenes `make_scene` knows, as a Patterns::Selection. */
+    std::string
+    scene_names();
+
+    /** Declare the parameters of every scene (one subsection each). */
+    void
+    declare_scene_parameters(ParameterHandler &prm);
+
+    /** The scene of the given name, reading its subsection of prm. */
+    template <int dim>
+    std::unique_ptr<Scene<dim>>
+    make_scene(const std::string &name, ParameterHandler &prm);
+  } // namespace scenes
+} // namespace rsfcycle
+
+#endif

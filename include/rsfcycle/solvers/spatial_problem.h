@@ -1,0 +1,102 @@
+#ifndef rsfcycle_solvers_spatial_problem_h
+#define rsfcycle_solvers_spatial_problem_h
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <rsfcycle/friction/rate_state.h>
+
+#include <array>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    using dealii::types::global_dof_index;
+
+    /**
+     * One contact node: the tangential degrees of freedom of one base vertex
+     * that are free (1 in 2D; 2 in 3D, or 1 where a 3D base vertex also lies
+     * on a free-slip wall). Its normal component is fixed (u.n = 0).
+     */
+    struct ContactNode
+    {
+      std::array<global_dof_index, 2> dofs{};
+      unsigned int                    n_dofs = 0;
+    };
+
+    /**
+     * The contact nodes of a mesh and, per degree of freedom, the node it
+     * belongs to (-1 if none). Built once per mesh.
+     */
+    struct ContactSet
+    {
+      std::vector<ContactNode> nodes;
+      std::vector<int>         dof_to_node;
+
+      void
+      build_index(const global_dof_index n_dofs)
+      {
+        dof_to_node.assign(n_dofs, -1);
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          for (unsigned int k = 0; k < nodes[i].n_dofs; ++k)
+            dof_to_node[nodes[i].dofs[k]] = static_cast<int>(i);
+      }
+    };
+
+    /**
+     * The spatial problem (15) for a fixed state, as a convex minimisation
+     * (MODEL.md §4.2):
+     *   min J(v) = 1/2 v^T A v - r^T v + sum_i phi_i(|v_{T_i}|)
+     * over all v whose entries marked `fixed` (Dirichlet values, hanging
+     * nodes) keep the values they have on entry.
+     */
+    struct SpatialProblem
+    {
+      const dealii::SparseMatrix<double> *       A        = nullptr;
+      const dealii::Vector<double> *             rhs      = nullptr;
+      const std::vector<bool> *                  fixed    = nullptr;
+      const ContactSet *                         contact  = nullptr;
+      const std::vector<friction::NodePotential> *potentials = nullptr;
+    };
+
+    /**
+     * The truncated Newton system of one TNNMG iteration (MODEL.md §4.2
+     * step 3): (A + H) c = rhs on the components not truncated; c = 0 on the
+     * truncated ones. H is block diagonal with one d x d block (row-major)
+     * per contact node; blocks of truncated nodes are zero.
+     */
+    struct TruncatedNewtonSystem
+    {
+      const dealii::SparseMatrix<double> *    A           = nullptr;
+      const ContactSet *                      contact     = nullptr;
+      const std::vector<std::array<double, 4>> *node_hessians = nullptr;
+      const std::vector<bool> *               truncated   = nullptr;
+    };
+
+    /**
+     * The linear correction of TNNMG behind one interface, so that the
+     * sparse direct solve, algebraic and geometric multigrid plug in without
+     * touching the TNNMG step.
+     */
+    class LinearCorrection
+    {
+    public:
+      virtual ~LinearCorrection() = default;
+
+      /**
+       * Solve the truncated system approximately; return the number of
+       * inner iterations (multigrid cycles; 1 for a direct solve).
+       */
+      virtual unsigned int
+      solve(const TruncatedNewtonSystem &system,
+            const dealii::Vector<double> &rhs,
+            dealii::Vector<double> &      correction) = 0;
+    };
+  } // namespace solvers
+} // namespace rsfcycle
+
+#endif

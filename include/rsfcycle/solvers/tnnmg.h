@@ -1,0 +1,101 @@
+#ifndef rsfcycle_solvers_tnnmg_h
+#define rsfcycle_solvers_tnnmg_h
+
+#include <rsfcycle/solvers/spatial_problem.h>
+
+#include <memory>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    /** Settings of the TNNMG iteration. */
+    struct TNNMGControl
+    {
+      /** Stop when ||v_k - v_{k-1}||_A <= tolerance * ||v_k||_A. */
+      double tolerance = 1e-9;
+      /** Give up (failure) after this many iterations. */
+      unsigned int max_iterations = 100;
+      /**
+       * A sliding contact node whose friction Hessian exceeds this multiple
+       * of the diagonal of A is "effectively stuck" and is truncated too
+       * (MODEL.md §4.2, conditioning).
+       */
+      double truncation_ratio = 1e10;
+    };
+
+    /** What one TNNMG solve did. */
+    struct TNNMGStatistics
+    {
+      unsigned int iterations        = 0;
+      unsigned int linear_iterations = 0;
+      bool         converged         = false;
+      double       relative_change   = 0;
+    };
+
+    /**
+     * Truncated nonsmooth Newton multigrid (Graeser, Sack, Sander 2009) for
+     * the spatial problem: per iteration a nonlinear block Gauss-Seidel sweep
+     * with exact node-local friction solves, truncation of the non-smooth
+     * and effectively stuck contact nodes, a linear correction, and an exact
+     * line search along the correction (MODEL.md §4.2, steps 1-4).
+     */
+    class TNNMG
+    {
+    public:
+      TNNMG(LinearCorrection &correction, const TNNMGControl &control);
+
+      /**
+       * Minimise J starting from v (fixed entries must hold their values).
+       * Returns statistics; v holds the last iterate. Non-finite values give
+       * converged = false.
+       */
+      TNNMGStatistics
+      solve(const SpatialProblem &problem, dealii::Vector<double> &v);
+
+      /**
+       * One nonlinear block Gauss-Seidel sweep over all free dofs: a linear
+       * update for dofs without friction, the exact node-local friction
+       * solve for contact nodes (MODEL.md §4.2 step 1).
+       */
+      static void
+      gauss_seidel_sweep(const SpatialProblem &problem,
+                         dealii::Vector<double> &v);
+
+    private:
+      double
+      line_search(const SpatialProblem &        problem,
+                  const dealii::Vector<double> &v,
+                  const dealii::Vector<double> &c) const;
+
+      LinearCorrection &correction;
+      TNNMGControl      control;
+
+      dealii::Vector<double>             residual, increment, newton_rhs,
+        correction_vector, Ac, v_old;
+      std::vector<bool>                  truncated;
+      std::vector<std::array<double, 4>> hessians;
+    };
+
+
+    /** Sparse direct linear correction (UMFPACK) on the truncated system. */
+    class DirectCorrection : public LinearCorrection
+    {
+    public:
+      unsigned int
+      solve(const TruncatedNewtonSystem &system,
+            const dealii::Vector<double> &rhs,
+            dealii::Vector<double> &      correction) override;
+
+    private:
+      dealii::SparseMatrix<double> matrix;
+    };
+
+    /** The names accepted for `Linear correction`. */
+    std::string
+    linear_correction_names();
+  } // namespace solvers
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,248 @@
+#include <rsfcycle/friction/rate_state.h>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace friction
+  {
+    namespace
+    {
+      constexpr double log_two       = 0.69314718055994530942;
+      constexpr double max_exponent  = 690.; // exp(690) ~ 1e300
+      constexpr double derivative_cap = 1e300;
+
+      /** log(exp(x) + exp(y)) without overflow. */
+      double
+      log_add_exp(const double x, const double y)
+      {
+        const double m = std::max(x, y);
+        if (m == -std::numeric_limits<double>::infinity())
+          return m;
+        return m + std::log1p(std::exp(-std::abs(x - y)));
+      }
+    } // namespace
+
+
+    StateLaw
+    state_law_from_name(const std::string &name)
+    {
+      if (name == "ageing")
+        return StateLaw::ageing;
+      if (name == "slip")
+        return StateLaw::slip;
+      throw std::invalid_argument("Unknown state law <" + name +
+                                  ">: allowed are ageing|slip");
+    }
+
+
+    double
+    friction_coefficient(const Parameters &p, const double alpha,
+                         const double V)
+    {
+      if (!(V > 0))
+        return 0.;
+      const double log_z = std::log(V) - log_two - p.log_v_theta(alpha);
+      if (log_z > 0)
+        {
+          // asinh(z) = log z + log(1 + sqrt(1 + z^-2)); z^-2 <= 1 here.
+          const double z_m2 = std::exp(-2. * log_z);
+          return p.a * (log_z + std::log1p(std::sqrt(1. + z_m2)));
+        }
+      return p.a * std::asinh(std::exp(log_z));
+    }
+
+
+    double
+    friction_coefficient_derivative(const Parameters &p, const double alpha,
+                                    const double V)
+    {
+      const double log_v_theta = p.log_v_theta(alpha);
+      if (V > 0)
+        {
+          const double log_z = std::log(V) - log_two - log_v_theta;
+          if (log_z > 0)
+            // a / (V sqrt(1 + z^-2))
+            return p.a / (V * std::sqrt(1. + std::exp(-2. * log_z)));
+          const double z        = std::exp(log_z);
+          const double exponent = std::log(p.a) - log_two - log_v_theta -
+                                  0.5 * std::log1p(z * z);
+          return exponent > max_exponent ? derivative_cap :
+                                           std::exp(exponent);
+        }
+      const double exponent = std::log(p.a) - log_two - log_v_theta;
+      return exponent > max_exponent ? derivative_cap : std::exp(exponent);
+    }
+
+
+    double
+    steady_state_friction_coefficient(const Parameters &p, const double V)
+    {
+      return friction_coefficient(p, std::log(p.v_star / V), V);
+    }
+
+
+    double
+    update_state(const StateLaw    law,
+                 const Parameters &p,
+                 const double      alpha,
+                 const double      V,
+                 const double      tau)
+    {
+      const double x = V * tau / p.L;
+      switch (law)
+        {
+          case StateLaw::ageing:
+            {
+              // phi1(x) = (1 - e^{-x}) / x, -> 1 for x -> 0
+              const double phi1 = (x > 1e-300) ? -std::expm1(-x) / x : 1.;
+              return log_add_exp(alpha - x,
+                                 std::log(p.v_star * tau / p.L) +
+                                   std::log(phi1));
+            }
+          case StateLaw::slip:
+            {
+              if (!(V > 0))
+                return alpha;
+              return alpha * std::exp(-x) -
+                     std::log(V / p.v_star) * std::expm1(-x);
+            }
+        }
+      return alpha;
+    }
+
+
+    namespace
+    {
+      /** x = (A + lambda I)^{-1} rho for d = 1, 2. */
+      template <int d>
+      std::array<double, d>
+      shifted_solve(const std::array<double, d * d> &A,
+                    const std::array<double, d> &    rho,
+                    const double                     lambda)
+      {
+        std::array<double, d> x;
+        if constexpr (d == 1)
+          x[0] = rho[0] / (A[0] + lambda);
+        else
+          {
+            const double a00 = A[0] + lambda, a01 = A[1], a10 = A[2],
+                         a11 = A[3] + lambda;
+            const double det = a00 * a11 - a01 * a10;
+            x[0]             = (a11 * rho[0] - a01 * rho[1]) / det;
+            x[1]             = (-a10 * rho[0] + a00 * rho[1]) / det;
+          }
+        return x;
+      }
+
+      template <int d>
+      double
+      norm(const std::array<double, d> &x)
+      {
+        double s = 0;
+        for (const double xi : x)
+          s += xi * xi;
+        return std::sqrt(s);
+      }
+    } // namespace
+
+
+    template <int d>
+    LocalSolution<d>
+    solve_local_problem(const std::array<double, d * d> &A,
+                        const std::array<double, d> &    rho,
+                        const NodePotential &            phi)
+    {
+      LocalSolution<d> result;
+      const double     rho_norm = norm<d>(rho);
+      if (!(rho_norm > phi.cohesion_force))
+        {
+          result.stuck = true;
+          return result;
+        }
+
+      // F(l) with lambda = exp(l); F is increasing in l.
+      const auto F = [&](const double l, double &dF_dl) {
+        const double lambda = std::exp(l);
+        const auto   x      = shifted_solve<d>(A, rho, lambda);
+        const double s      = norm<d>(x);
+        // ds/dlambda = - x^T (A + lambda I)^{-1} x / s
+        const auto y       = shifted_solve<d>(A, x, lambda);
+        double     xy      = 0;
+        for (unsigned int i = 0; i < d; ++i)
+          xy += x[i] * y[i];
+        const double ds = (s > 0) ? -xy / s : 0.;
+        dF_dl = lambda * (s + lambda * ds - phi.second_derivative(s) * ds);
+        return lambda * s - phi.derivative(s);
+      };
+
+      // Bracket the root. Start where lambda = phi'(s0)/s0 with s0 = |A^-1
+      // rho| (an upper bound of s), then expand by factors of 10.
+      const double s0 = norm<d>(shifted_solve<d>(A, rho, 0.));
+      double       l  = std::log(std::max(phi.derivative(s0) / s0, 1e-300));
+      double       dF;
+      double       f  = F(l, dF);
+      double       lo = l, hi = l;
+      constexpr double l_min = -690., l_max = 690.;
+      if (f < 0)
+        {
+          while (f < 0 && hi < l_max)
+            {
+              lo = hi;
+              hi = std::min(hi + 2.3, l_max);
+              f  = F(hi, dF);
+            }
+          if (f < 0)
+            {
+              // s(lambda) < 1e-300 |rho|/|A|: the node does not move in
+              // double precision.
+              result.stuck = true;
+              return result;
+            }
+        }
+      else
+        {
+          while (f > 0 && lo > l_min)
+            {
+              hi = lo;
+              lo = std::max(lo - 2.3, l_min);
+              f  = F(lo, dF);
+            }
+        }
+
+      // Safeguarded Newton in l on [lo, hi].
+      l = 0.5 * (lo + hi);
+      for (unsigned int it = 0; it < 200; ++it)
+        {
+          ++result.iterations;
+          f = F(l, dF);
+          if (f == 0)
+            break;
+          if (f < 0)
+            lo = l;
+          else
+            hi = l;
+          double l_new = (dF > 0) ? l - f / dF : 0.5 * (lo + hi);
+          if (!(l_new > lo && l_new < hi))
+            l_new = 0.5 * (lo + hi);
+          const double step = std::abs(l_new - l);
+          l                 = l_new;
+          if (step < 1e-14 * std::max(1., std::abs(l)) || hi - lo < 1e-14)
+            break;
+        }
+      result.x = shifted_solve<d>(A, rho, std::exp(l));
+      return result;
+    }
+
+    template LocalSolution<1>
+    solve_local_problem<1>(const std::array<double, 1> &,
+                           const std::array<double, 1> &,
+                           const NodePotential &);
+    template LocalSolution<2>
+    solve_local_problem<2>(const std::array<double, 4> &,
+                           const std::array<double, 2> &,
+                           const NodePotential &);
+  } // namespace friction
+} // namespace rsfcycle

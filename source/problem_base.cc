@@ -1,0 +1,928 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <rsfcycle/ids.h>
+#include <rsfcycle/problem_base.h>
+#include <rsfcycle/time/step_doubling.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+
+namespace rsfcycle
+{
+  template <int dim>
+  ProblemBase<dim>::ProblemBase(const Parameters &        parameters,
+                                const scenes::Scene<dim> &scene,
+                                std::ostream &            log)
+    : parameters(parameters)
+    , scene(scene)
+    , log(log)
+    , timer(log, TimerOutput::never, TimerOutput::wall_times)
+    , tria(Triangulation<dim>::limit_level_difference_at_vertices)
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(tria)
+    , scalar_fe(1)
+    , scalar_dof_handler(tria)
+    , state_law(friction::state_law_from_name(parameters.solver.state_law))
+  {
+    if (parameters.solver.linear_correction == "direct")
+      linear_correction = std::make_unique<solvers::DirectCorrection>();
+    else
+      throw std::invalid_argument("Solver/Linear correction = " +
+                                  parameters.solver.linear_correction +
+                                  ": allowed are " +
+                                  solvers::linear_correction_names());
+    solvers::TNNMGControl control;
+    control.tolerance        = parameters.solver.tnnmg_tolerance;
+    control.max_iterations   = parameters.solver.max_tnnmg_iterations;
+    control.truncation_ratio = parameters.solver.truncation_ratio;
+    tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction, control);
+  }
+
+
+  template <int dim>
+  ProblemBase<dim>::~ProblemBase()
+  {
+    dof_handler.clear();
+    scalar_dof_handler.clear();
+  }
+
+
+  /**
+   * The coarse mesh of the scene, refined globally and then locally: in
+   * every local cycle the cells whose centre is closer to the patch than
+   * `Refinement distance` times their diameter are refined, so the refined
+   * zone shrinks with the level and the patch gets the finest cells.
+   */
+  template <int dim>
+  void
+  ProblemBase<dim>::make_grid()
+  {
+    scene.create_coarse_mesh(tria);
+    tria.refine_global(parameters.mesh.global_refinements);
+    for (unsigned int cycle = 0; cycle < parameters.mesh.local_refinements;
+         ++cycle)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (scene.distance_to_patch(cell->center()) <
+              parameters.mesh.refinement_distance * cell->diameter())
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(scene.material_id(cell->center()));
+  }
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::setup_system()
+  {
+    dof_handler.distribute_dofs(fe);
+    scalar_dof_handler.distribute_dofs(scalar_fe);
+
+    hanging_constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+    scalar_constraints.clear();
+    DoFTools::make_hanging_node_constraints(scalar_dof_handler,
+                                            scalar_constraints);
+    scalar_constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_constraints, true);
+    sparsity_pattern.copy_from(dsp);
+    mass_matrix.reinit(sparsity_pattern);
+    viscosity_matrix.reinit(sparsity_pattern);
+    stiffness_matrix.reinit(sparsity_pattern);
+    body_force.reinit(dof_handler.n_dofs());
+  }
+
+
+  /**
+   * Mass M (density), viscosity C (Kelvin-Voigt, shear and bulk viscosity)
+   * and stiffness K (bulk modulus, Poisson ratio) matrices and the gravity
+   * load, all independent of the step size; hanging nodes condensed.
+   * A stress of "the same form" is lambda tr(e) I + 2 mu e with
+   * lambda = bulk - 2/3 shear.
+   */
+  template <int dim>
+  void
+  ProblemBase<dim>::assemble_matrices()
+  {
+    const auto [bulk_modulus, nu] = scene.elastic_moduli();
+    const double shear_modulus =
+      3. * bulk_modulus * (1. - 2. * nu) / (2. * (1. + nu));
+    const double lambda = bulk_modulus - 2. / 3. * shear_modulus;
+    const Tensor<1, dim> gravity = scene.gravity();
+
+    const QGauss<dim>  quadrature(fe.degree + 1);
+    FEValues<dim>      fe_values(fe, quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    const unsigned int n = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_mass(n, n), cell_viscosity(n, n),
+      cell_stiffness(n, n);
+    Vector<double>                       cell_force(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    const FEValuesExtractors::Vector     displacement(0);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        const scenes::Material material = scene.material(cell->material_id());
+        const double           eta_lambda =
+          material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
+        cell_mass      = 0;
+        cell_viscosity = 0;
+        cell_stiffness = 0;
+        cell_force     = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double JxW = fe_values.JxW(q);
+            for (const unsigned int i : fe_values.dof_indices())
+              {
+                const Tensor<1, dim> phi_i = fe_values[displacement].value(i, q);
+                const SymmetricTensor<2, dim> eps_i =
+                  fe_values[displacement].symmetric_gradient(i, q);
+                const double div_i = trace(eps_i);
+                for (const unsigned int j : fe_values.dof_indices())
+                  {
+                    const SymmetricTensor<2, dim> eps_j =
+                      fe_values[displacement].symmetric_gradient(j, q);
+                    const double div_j   = trace(eps_j);
+                    const double eps_eps = eps_i * eps_j;
+                    cell_mass(i, j) += material.density * phi_i *
+                                       fe_values[displacement].value(j, q) *
+                                       JxW;
+                    cell_stiffness(i, j) +=
+                      (lambda * div_i * div_j + 2. * shear_modulus * eps_eps) *
+                      JxW;
+                    cell_viscosity(i, j) +=
+                      (eta_lambda * div_i * div_j +
+                       2. * material.shear_viscosity * eps_eps) *
+                      JxW;
+                  }
+                cell_force(i) += material.density * gravity * phi_i * JxW;
+              }
+          }
+        cell->get_dof_indices(dof_indices);
+        hanging_constraints.distribute_local_to_global(cell_mass,
+                                                       cell_force,
+                                                       dof_indices,
+                                                       mass_matrix,
+                                                       body_force);
+        hanging_constraints.distribute_local_to_global(cell_viscosity,
+                                                       dof_indices,
+                                                       viscosity_matrix);
+        hanging_constraints.distribute_local_to_global(cell_stiffness,
+                                                       dof_indices,
+                                                       stiffness_matrix);
+      }
+  }
+
+
+  /**
+   * Fixed dofs (backstop: all components; base: the normal component y;
+   * lateral walls: z; hanging nodes), the contact nodes with their lumped
+   * (trapezoidal) boundary weights w_i, condensed onto non-hanging nodes so
+   * that the friction potential stays node-wise separable, and the
+   * friction parameters of each node.
+   */
+  template <int dim>
+  void
+  ProblemBase<dim>::setup_contact()
+  {
+    const types::global_dof_index n_dofs = dof_handler.n_dofs();
+    fixed.assign(n_dofs, false);
+    backstop_dofs.clear();
+    for (types::global_dof_index i = 0; i < n_dofs; ++i)
+      if (hanging_constraints.is_constrained(i))
+        fixed[i] = true;
+
+    Vector<double>         weights(n_dofs);
+    const QTrapezoid<dim - 1> trapezoid;
+    FEFaceValues<dim>      fe_face(fe, trapezoid,
+                              update_values | update_JxW_values);
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    struct BaseVertex
+    {
+      Point<dim>              position;
+      types::global_dof_index scalar_dof, normal_dof, lateral_dof;
+    };
+    std::map<types::global_dof_index, BaseVertex> base_vertices; // by x dof
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        {
+          const auto face = cell->face(f);
+          if (!face->at_boundary())
+            continue;
+          const types::boundary_id id = face->boundary_id();
+          if (id == boundary_id::backstop)
+            for (const unsigned int v : face->vertex_indices())
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const auto dof = face->vertex_dof_index(v, c);
+                  if (!fixed[dof])
+                    backstop_dofs.emplace_back(dof, c);
+                  fixed[dof] = true;
+                }
+          else if (id == boundary_id::lateral && dim == 3)
+            for (const unsigned int v : face->vertex_indices())
+              fixed[face->vertex_dof_index(v, dim - 1)] = true;
+          else if (id == boundary_id::contact)
+            {
+              const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
+                &tria, cell->level(), cell->index(), &scalar_dof_handler);
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  fixed[face->vertex_dof_index(v, 1)] = true;
+                  base_vertices[face->vertex_dof_index(v, 0)] = {
+                    face->vertex(v),
+                    scalar_cell->face(f)->vertex_dof_index(v, 0),
+                    face->vertex_dof_index(v, 1),
+                    face->vertex_dof_index(v, dim - 1)};
+                }
+              fe_face.reinit(cell, f);
+              cell->get_dof_indices(dof_indices);
+              for (const unsigned int i : fe_face.dof_indices())
+                if (fe.system_to_component_index(i).first == 0)
+                  for (const unsigned int q :
+                       fe_face.quadrature_point_indices())
+                    weights[dof_indices[i]] +=
+                      fe_face.shape_value_component(i, q, 0) * fe_face.JxW(q);
+            }
+        }
+    // backstop dofs that are hanging are set by distribute(), not directly
+    backstop_dofs.erase(
+      std::remove_if(backstop_dofs.begin(), backstop_dofs.end(),
+                     [&](const auto &d) {
+                       return hanging_constraints.is_constrained(d.first);
+                     }),
+      backstop_dofs.end());
+    hanging_constraints.condense(weights);
+
+    // Contact nodes: base vertices with a free tangential component.
+    contact.nodes.clear();
+    node_info.clear();
+    contact_area = 0;
+    for (const auto &[x_dof, vertex] : base_vertices)
+      {
+        if (hanging_constraints.is_constrained(x_dof))
+          continue;
+        solvers::ContactNode node;
+        std::vector<types::global_dof_index> tangential = {x_dof};
+        if (dim == 3)
+          tangential.push_back(vertex.lateral_dof);
+        for (const auto dof : tangential)
+          if (!fixed[dof])
+            node.dofs[node.n_dofs++] = dof;
+        if (node.n_dofs == 0)
+          continue;
+        NodeInfo info;
+        info.position   = vertex.position;
+        info.weight     = weights[x_dof];
+        info.params     = scene.friction_parameters(vertex.position);
+        info.scalar_dof = vertex.scalar_dof;
+        info.normal_dof = vertex.normal_dof;
+        contact.nodes.push_back(node);
+        node_info.push_back(info);
+        contact_area += info.weight;
+      }
+    contact.build_index(n_dofs);
+  }
+
+
+  /**
+   * The initial displacement: static equilibrium under gravity with a
+   * frictionless base (normal component fixed) and a fixed backstop. The
+   * normal force of each contact node, w_i |sigma_n,i|, is the magnitude of
+   * its normal reaction force, the residual K u - f of the y component.
+   */
+  template <int dim>
+  void
+  ProblemBase<dim>::compute_initial_state()
+  {
+    SparseMatrix<double> K(sparsity_pattern);
+    K.copy_from(stiffness_matrix);
+    Vector<double> rhs(body_force);
+    for (auto it = K.begin(); it != K.end(); ++it)
+      if (fixed[it->row()] || fixed[it->column()])
+        it->value() = (it->row() == it->column()) ? 1. : 0.;
+    for (types::global_dof_index i = 0; i < rhs.size(); ++i)
+      if (fixed[i])
+        rhs[i] = 0;
+    Vector<double>       u(dof_handler.n_dofs());
+    SparseDirectUMFPACK  direct;
+    direct.initialize(K);
+    direct.vmult(u, rhs);
+    hanging_constraints.distribute(u);
+
+    Vector<double> reaction(dof_handler.n_dofs());
+    stiffness_matrix.vmult(reaction, u);
+    reaction -= body_force;
+
+    unsigned int n_tensile = 0;
+    double       total     = 0;
+    for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+      total += reaction[node_info[k].normal_dof];
+    for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+      {
+        const double r = reaction[node_info[k].normal_dof];
+        node_info[k].normal_force = std::abs(r);
+        if (r * total < 0)
+          ++n_tensile;
+      }
+    if (n_tensile > 0)
+      log << "Warning: " << n_tensile
+          << " contact nodes carry a tensile normal reaction in the gravity "
+             "equilibrium; their magnitude is used."
+          << std::endl;
+
+    initial.u = u;
+    initial.v.reinit(dof_handler.n_dofs());
+    initial.a.reinit(dof_handler.n_dofs());
+    initial.alpha.assign(contact.nodes.size(), 0.);
+    initial.shear_traction.assign(contact.nodes.size(), 0.);
+  }
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::setup()
+  {
+    {
+      TimerOutput::Scope scope(timer, "Setup");
+      make_grid();
+      setup_system();
+      setup_contact();
+      assemble_matrices();
+    }
+    {
+      TimerOutput::Scope scope(timer, "Normal stress");
+      compute_initial_state();
+    }
+
+    // Observation points: u . vertical as a weighted sum of dofs.
+    observation_weights.clear();
+    const MappingQ1<dim> mapping;
+    for (const auto &[name, point] : scene.observation_points())
+      {
+        const auto cell_and_point =
+          GridTools::find_active_cell_around_point(mapping, dof_handler, point);
+        const Quadrature<dim> q(
+          GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
+        FEValues<dim> fe_values(mapping, fe, q, update_values);
+        fe_values.reinit(cell_and_point.first);
+        std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+        cell_and_point.first->get_dof_indices(indices);
+        std::vector<std::pair<types::global_dof_index, double>> w;
+        const Tensor<1, dim> up = scene.vertical();
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            w.emplace_back(indices[i], fe_values.shape_value(i, 0) * up[c]);
+          }
+        observation_weights.push_back(w);
+      }
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  ProblemBase<dim>::observed_uplift(const Vector<double> &u) const
+  {
+    // Hanging-node values are set in u (distribute), so the interpolation
+    // may use any dof of the cell.
+    std::vector<double> values;
+    for (const auto &w : observation_weights)
+      {
+        double value = 0;
+        for (const auto &[dof, weight] : w)
+          value += weight * u[dof];
+        values.push_back(value);
+      }
+    return values;
+  }
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::set_fixed_values(Vector<double> &v, const double t) const
+  {
+    const Tensor<1, dim> velocity = scene.backstop_velocity(t);
+    for (const auto &[dof, component] : backstop_dofs)
+      v[dof] = velocity[component];
+  }
+
+
+  /**
+   * The step matrix A = 2/tau M + C + tau/2 K (quasi-static: without M), as
+   * a linear combination of the matrices assembled once; the last few are
+   * kept since step doubling alternates between tau/2, tau and 2 tau.
+   */
+  template <int dim>
+  const SparseMatrix<double> &
+  ProblemBase<dim>::step_matrix(const double tau)
+  {
+    for (auto &entry : step_matrices)
+      if (entry.first == tau)
+        return *entry.second;
+    if (step_matrices.size() >= 4)
+      step_matrices.erase(step_matrices.begin());
+    auto A = std::make_unique<SparseMatrix<double>>(sparsity_pattern);
+    A->copy_from(viscosity_matrix);
+    A->add(tau / 2, stiffness_matrix);
+    if (parameters.solver.dynamics == "dynamic")
+      A->add(2. / tau, mass_matrix);
+    step_matrices.emplace_back(tau, std::move(A));
+    return *step_matrices.back().second;
+  }
+
+
+  template <int dim>
+  double
+  ProblemBase<dim>::state_distance(const std::vector<double> &alpha1,
+                                   const std::vector<double> &alpha2) const
+  {
+    double sum = 0;
+    for (unsigned int k = 0; k < alpha1.size(); ++k)
+      {
+        const double d = alpha1[k] - alpha2[k];
+        sum += node_info[k].weight * d * d;
+      }
+    return std::sqrt(sum / contact_area);
+  }
+
+
+  template <int dim>
+  std::vector<double>
+  ProblemBase<dim>::slip_rates(const Vector<double> &v) const
+  {
+    std::vector<double> rates(contact.nodes.size());
+    for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+      {
+        double s2 = 0;
+        for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
+          s2 += v[contact.nodes[k].dofs[l]] * v[contact.nodes[k].dofs[l]];
+        rates[k] = std::sqrt(s2);
+      }
+    return rates;
+  }
+
+
+  /**
+   * One Newmark step (15) with the rate/state fixed-point iteration (18):
+   * theta^0 = theta_{n-1}; v^k = TNNMG solution with theta^{k-1};
+   * theta^k from (17) with V = |(v_{n-1} + v^k)/2|; stop at
+   * d(theta^k, theta^{k-1}) <= epsilon. With explicit coupling, the state is
+   * updated once from V = |v_{n-1}| and one spatial problem is solved.
+   */
+  template <int dim>
+  std::optional<BodyState>
+  ProblemBase<dim>::newmark_step(const BodyState &old,
+                                 const double     t,
+                                 const double     tau)
+  {
+    const bool                  dynamic = parameters.solver.dynamics == "dynamic";
+    const SparseMatrix<double> &A       = step_matrix(tau);
+    const unsigned int          n_nodes = contact.nodes.size();
+
+    Vector<double> rhs(body_force), tmp(old.u);
+    tmp.add(tau / 2, old.v);
+    Vector<double> Ku(rhs.size());
+    stiffness_matrix.vmult(Ku, tmp);
+    rhs -= Ku;
+    if (dynamic)
+      {
+        tmp = old.a;
+        tmp.add(2. / tau, old.v);
+        Vector<double> Mv(rhs.size());
+        mass_matrix.vmult(Mv, tmp);
+        rhs += Mv;
+      }
+
+    BodyState next;
+    next.v = old.v;
+    set_fixed_values(next.v, t + tau);
+    hanging_constraints.distribute(next.v);
+
+    std::vector<friction::NodePotential> potentials(n_nodes);
+    const double                         cohesion = scene.cohesion();
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        potentials[k].params         = node_info[k].params;
+        potentials[k].normal_force   = node_info[k].normal_force;
+        potentials[k].cohesion_force = node_info[k].weight * cohesion;
+      }
+    solvers::SpatialProblem problem;
+    problem.A          = &A;
+    problem.rhs        = &rhs;
+    problem.fixed      = &fixed;
+    problem.contact    = &contact;
+    problem.potentials = &potentials;
+
+    const auto update_state = [&](const Vector<double> &v_new,
+                                  const double          weight_new,
+                                  std::vector<double> & alpha) {
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        {
+          double s2 = 0;
+          for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
+            {
+              const auto   dof = contact.nodes[k].dofs[l];
+              const double vm  = (1 - weight_new) * old.v[dof] +
+                                weight_new * v_new[dof];
+              s2 += vm * vm;
+            }
+          alpha[k] = friction::update_state(
+            state_law, node_info[k].params, old.alpha[k], std::sqrt(s2), tau);
+        }
+    };
+
+    std::vector<double> alpha = old.alpha, alpha_new(n_nodes);
+    const bool explicit_coupling = parameters.solver.coupling == "explicit";
+    if (explicit_coupling)
+      update_state(old.v, 0., alpha);
+
+    bool converged = false;
+    for (unsigned int k = 1; k <= parameters.solver.max_fixed_point_iterations;
+         ++k)
+      {
+        for (unsigned int i = 0; i < n_nodes; ++i)
+          potentials[i].alpha = alpha[i];
+        const solvers::TNNMGStatistics stats = tnnmg->solve(problem, next.v);
+        next.statistics.fixed_point_iterations = k;
+        next.statistics.tnnmg_iterations += stats.iterations;
+        next.statistics.linear_iterations += stats.linear_iterations;
+        if (!stats.converged)
+          return {};
+        if (explicit_coupling)
+          {
+            converged = true;
+            break;
+          }
+        update_state(next.v, 0.5, alpha_new);
+        const double d = state_distance(alpha_new, alpha);
+        alpha.swap(alpha_new);
+        if (!std::isfinite(d))
+          return {};
+        if (d <= parameters.solver.fixed_point_tolerance)
+          {
+            converged = true;
+            break;
+          }
+      }
+    if (!converged)
+      return {};
+
+    hanging_constraints.distribute(next.v);
+    next.alpha = alpha;
+    next.u     = old.u;
+    next.u.add(tau / 2, old.v, tau / 2, next.v);
+    if (dynamic)
+      {
+        next.a = next.v;
+        next.a -= old.v;
+        next.a *= 2. / tau;
+        next.a -= old.a;
+      }
+    else
+      next.a.reinit(old.a.size());
+
+    // Friction force per node from the equilibrium, r - A v (tangential).
+    Vector<double> residual(rhs.size());
+    A.residual(residual, next.v, rhs);
+    next.shear_traction.resize(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        double f2 = 0;
+        for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
+          f2 += residual[contact.nodes[k].dofs[l]] *
+                residual[contact.nodes[k].dofs[l]];
+        next.shear_traction[k] = std::sqrt(f2) / node_info[k].weight;
+      }
+
+    if (!std::isfinite(next.u.l2_norm()) || !std::isfinite(next.v.l2_norm()) ||
+        !std::isfinite(next.a.l2_norm()))
+      return {};
+    for (const double a : next.alpha)
+      if (!std::isfinite(a))
+        return {};
+    return next;
+  }
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::output_results(const BodyState &state, const double t)
+  {
+    TimerOutput::Scope scope(timer, "Output");
+    const unsigned int n_nodes = contact.nodes.size();
+    const std::vector<double> rates = slip_rates(state.v);
+    Vector<double> slip_rate(scalar_dof_handler.n_dofs()),
+      log_slip_rate(scalar_dof_handler.n_dofs()),
+      theta(scalar_dof_handler.n_dofs()), mu(scalar_dof_handler.n_dofs()),
+      traction(scalar_dof_handler.n_dofs()),
+      normal_stress(scalar_dof_handler.n_dofs());
+    const double v0 = scene.convergence_rate();
+    log_slip_rate   = std::log10(1e-20);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        const auto &info = node_info[k];
+        const auto  dof  = info.scalar_dof;
+        slip_rate[dof]   = rates[k];
+        log_slip_rate[dof] = std::log10(std::max(rates[k] / v0, 1e-20));
+        theta[dof] = info.params.L / info.params.v_star * std::exp(state.alpha[k]);
+        mu[dof] = friction::friction_coefficient(info.params, state.alpha[k], rates[k]);
+        traction[dof] = state.shear_traction[k];
+        normal_stress[dof] = info.normal_force / info.weight;
+      }
+    for (auto *vec : {&slip_rate, &theta, &mu, &traction, &normal_stress})
+      scalar_constraints.distribute(*vec);
+
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_part(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(state.u,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data, vector_part);
+    data_out.add_data_vector(state.v,
+                             std::vector<std::string>(dim, "velocity"),
+                             DataOut<dim>::type_dof_data, vector_part);
+    data_out.add_data_vector(scalar_dof_handler, slip_rate, "slip_rate");
+    data_out.add_data_vector(scalar_dof_handler, log_slip_rate,
+                             "log10_slip_rate_over_v0");
+    data_out.add_data_vector(scalar_dof_handler, theta, "state");
+    data_out.add_data_vector(scalar_dof_handler, mu, "friction_coefficient");
+    data_out.add_data_vector(scalar_dof_handler, traction, "shear_traction");
+    data_out.add_data_vector(scalar_dof_handler, normal_stress,
+                             "normal_stress");
+    Vector<float> material(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
+      material[cell->active_cell_index()] = cell->material_id();
+    data_out.add_data_vector(material, "material_id");
+    data_out.build_patches();
+
+    DataOutBase::VtkFlags flags;
+    flags.time  = t;
+    flags.cycle = n_snapshots;
+    data_out.set_flags(flags);
+    const std::string name =
+      "solution-" + Utilities::int_to_string(n_snapshots, 5) + ".vtu";
+    std::ofstream vtu(parameters.run.output_directory + "/solution/" + name);
+    data_out.write_vtu(vtu);
+    pvd_records.emplace_back(t, "solution/" + name);
+    std::ofstream pvd(parameters.run.output_directory + "/solution.pvd");
+    DataOutBase::write_pvd_record(pvd, pvd_records);
+    ++n_snapshots;
+  }
+
+
+  namespace
+  {
+    std::string
+    format_duration(double seconds)
+    {
+      std::ostringstream s;
+      const long         total = static_cast<long>(seconds);
+      s << total / 3600 << "h" << std::setw(2) << std::setfill('0')
+        << (total / 60) % 60 << "m" << std::setw(2) << total % 60 << "s";
+      return s.str();
+    }
+  } // namespace
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::run(const ParameterHandler &prm)
+  {
+    const std::string dir = parameters.run.output_directory;
+    std::filesystem::create_directories(dir + "/solution");
+    {
+      std::ofstream out(dir + "/parameters.prm");
+      prm.print_parameters(out, ParameterHandler::PRM);
+    }
+
+    setup();
+    const unsigned int n_nodes = contact.nodes.size();
+    log << "Scene: " << parameters.run.scene << " (" << dim << "D)\n"
+        << "Mesh: " << tria.n_active_cells() << " cells, "
+        << tria.n_global_levels() << " levels, " << dof_handler.n_dofs()
+        << " unknowns, " << n_nodes << " contact nodes\n";
+    {
+      double h_min = 1e300, h_max = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          h_min = std::min(h_min, cell->diameter());
+          h_max = std::max(h_max, cell->diameter());
+        }
+      log << "Cell diameters: " << h_min << " m to " << h_max << " m\n";
+    }
+    log << "Solver: " << parameters.solver.coupling << " coupling, "
+        << parameters.solver.linear_correction << " linear correction, "
+        << parameters.solver.state_law << " law, "
+        << parameters.solver.dynamics << std::endl;
+
+    // Base profile: node order along the base.
+    std::vector<unsigned int> order(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      order[k] = k;
+    std::sort(order.begin(), order.end(), [&](unsigned int i, unsigned int j) {
+      const double si = scene.along_base_coordinate(node_info[i].position);
+      const double sj = scene.along_base_coordinate(node_info[j].position);
+      if (si != sj)
+        return si < sj;
+      return (dim == 3) && node_info[i].position[dim - 1] <
+                             node_info[j].position[dim - 1];
+    });
+
+    std::ofstream series(dir + "/time-series.csv");
+    series << "time_s,step_size_s,fixed_point_iterations,tnnmg_iterations,"
+              "linear_iterations,spatial_problems,max_slip_rate_m_per_s";
+    const auto points = scene.observation_points();
+    for (const auto &p : points)
+      series << "," << p.first << "_m";
+    series << "\n" << std::setprecision(10);
+
+    std::ofstream profile(dir + "/base-profile.csv");
+    profile << "# slip rate [m/s] of the contact nodes; first row: position "
+               "along the base [m]"
+            << (dim == 3 ? " (then the z coordinate in the second row)" : "")
+            << "\n"
+            << "time_s";
+    for (const unsigned int k : order)
+      profile << "," << scene.along_base_coordinate(node_info[k].position);
+    profile << "\n";
+    if (dim == 3)
+      {
+        profile << "z_m";
+        for (const unsigned int k : order)
+          profile << "," << node_info[k].position[dim - 1];
+        profile << "\n";
+      }
+    profile << std::setprecision(8);
+
+    BodyState state = initial;
+    double    t     = 0;
+    const double end_time = parameters.run.end_time;
+    const double v0       = scene.convergence_rate();
+    const double threshold = parameters.output.event_threshold * v0;
+
+    time::StepDoubling<BodyState> controller(
+      [this](const BodyState &s, const double t0, const double dt) {
+        return newmark_step(s, t0, dt);
+      },
+      [this](const BodyState &s1, const BodyState &s2) {
+        return state_distance(s1.alpha, s2.alpha);
+      },
+      parameters.time_stepping.tolerance,
+      parameters.time_stepping.initial_step,
+      parameters.time_stepping.minimum_step,
+      parameters.time_stepping.maximum_step,
+      parameters.time_stepping.adaptive);
+
+    const auto write_profile = [&](const double time,
+                                   const std::vector<double> &rates) {
+      profile << time;
+      for (const unsigned int k : order)
+        profile << "," << rates[k];
+      profile << "\n";
+    };
+
+    if (parameters.output.write_vtu)
+      output_results(state, t);
+    write_profile(t, slip_rates(state.v));
+    double last_output = 0, last_profile = 0;
+
+    unsigned int step = 0, n_events = 0, max_fixed_point = 0;
+    unsigned long total_problems = 0;
+    bool         in_event = false;
+    double       min_dt = 1e300, max_dt = 0;
+    const auto   wall_start    = std::chrono::steady_clock::now();
+    auto         last_progress = wall_start;
+
+    log << "*** Time loop to t = " << end_time << " s" << std::endl;
+    {
+      TimerOutput::Scope scope(timer, "Time stepping");
+      while (t < end_time * (1 - 1e-14))
+        {
+          try
+            {
+              controller.advance(state, t, end_time);
+            }
+          catch (const time::StepSizeUnderflow &e)
+            {
+              log << "Error: at t = " << t << " s: " << e.what() << std::endl;
+              throw;
+            }
+          ++step;
+          total_problems += controller.n_spatial_problems();
+          const double dt = controller.last_step_size();
+          min_dt          = std::min(min_dt, dt);
+          max_dt          = std::max(max_dt, dt);
+          max_fixed_point = std::max(max_fixed_point,
+                                     state.statistics.fixed_point_iterations);
+
+          const std::vector<double> rates = slip_rates(state.v);
+          const auto   max_it = std::max_element(rates.begin(), rates.end());
+          const double max_rate = (max_it == rates.end()) ? 0. : *max_it;
+          if (!in_event && max_rate > threshold)
+            {
+              in_event = true;
+              ++n_events;
+              log << "    event " << n_events << " starts at t = " << t
+                  << " s near s = "
+                  << scene.along_base_coordinate(
+                       node_info[max_it - rates.begin()].position)
+                  << " m along the base" << std::endl;
+            }
+          else if (in_event && max_rate < threshold)
+            in_event = false;
+
+          const std::vector<double> uplift = observed_uplift(state.u);
+          series << t << "," << dt << ","
+                 << state.statistics.fixed_point_iterations << ","
+                 << state.statistics.tnnmg_iterations << ","
+                 << state.statistics.linear_iterations << ","
+                 << controller.n_spatial_problems() << "," << max_rate;
+          for (const double z : uplift)
+            series << "," << z;
+          series << "\n";
+
+          // Profiles and snapshots at their interval, denser during events.
+          const double eps = 1e-12 * std::max(1., t);
+          if (t >= last_profile + (in_event ?
+                                     parameters.output.event_profile_interval :
+                                     parameters.output.profile_interval) -
+                     eps)
+            {
+              write_profile(t, rates);
+              last_profile = t;
+            }
+          if (parameters.output.write_vtu &&
+              t >= last_output + (in_event ?
+                                    parameters.output.event_output_interval :
+                                    parameters.output.output_interval) -
+                     eps)
+            {
+              output_results(state, t);
+              last_output = t;
+            }
+
+          const auto now = std::chrono::steady_clock::now();
+          const double since =
+            std::chrono::duration<double>(now - last_progress).count();
+          if (since >= parameters.output.progress_interval || t >= end_time)
+            {
+              last_progress = now;
+              const double elapsed =
+                std::chrono::duration<double>(now - wall_start).count();
+              const double eta = elapsed / t * (end_time - t);
+              log << "*** Step " << step << ": t = " << std::setprecision(6)
+                  << t << " s / " << end_time << " s, dt = " << dt
+                  << " s, max V = " << max_rate / v0 << " v0, events = "
+                  << n_events << ", wall " << format_duration(elapsed)
+                  << ", ETA " << format_duration(eta) << "\n"
+                  << "    solver: " << state.statistics.fixed_point_iterations
+                  << " fixed-point, " << state.statistics.tnnmg_iterations
+                  << " TNNMG, " << state.statistics.linear_iterations
+                  << " linear iterations; "
+                  << controller.n_spatial_problems()
+                  << " spatial problems this step" << std::endl;
+              series.flush();
+              profile.flush();
+            }
+        }
+    }
+    if (parameters.output.write_vtu && pvd_records.back().first < t)
+      output_results(state, t);
+
+    log << "Summary: " << step << " steps, " << total_problems
+        << " spatial problems, " << n_events << " events, step size "
+        << min_dt << " s to " << max_dt << " s, max fixed-point iterations "
+        << max_fixed_point << std::endl;
+    timer.print_summary();
+  }
+
+  template class ProblemBase<2>;
+  template class ProblemBase<3>;
+} // namespace rsfcycle

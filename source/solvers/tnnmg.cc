@@ -1,0 +1,327 @@
+#include <deal.II/lac/sparse_direct.h>
+
+#include <rsfcycle/solvers/tnnmg.h>
+
+#include <cmath>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    using dealii::SparseMatrix;
+    using dealii::Vector;
+
+    namespace
+    {
+      /**
+       * Gradient phi'(s) y/s and Hessian of phi(|y|) at y for one node
+       * (d = 1 or 2): phi''(s) e e^T + phi'(s)/s (I - e e^T), e = y/s.
+       */
+      void
+      friction_gradient_and_hessian(const friction::NodePotential &phi,
+                                    const std::array<double, 2> &  y,
+                                    const unsigned int             d,
+                                    std::array<double, 2> &        grad,
+                                    std::array<double, 4> &        hess)
+      {
+        const double s = (d == 1) ? std::abs(y[0]) :
+                                    std::sqrt(y[0] * y[0] + y[1] * y[1]);
+        grad = {{0., 0.}};
+        hess = {{0., 0., 0., 0.}};
+        if (!(s > 0))
+          return;
+        const double g  = phi.derivative(s);
+        const double gp = phi.second_derivative(s);
+        for (unsigned int k = 0; k < d; ++k)
+          grad[k] = g * y[k] / s;
+        if (d == 1)
+          hess[0] = gp;
+        else
+          {
+            const double e[2] = {y[0] / s, y[1] / s};
+            for (unsigned int k = 0; k < 2; ++k)
+              for (unsigned int l = 0; l < 2; ++l)
+                hess[2 * k + l] = gp * e[k] * e[l] +
+                                  g / s * ((k == l ? 1. : 0.) - e[k] * e[l]);
+          }
+      }
+    } // namespace
+
+
+    TNNMG::TNNMG(LinearCorrection &correction, const TNNMGControl &control)
+      : correction(correction)
+      , control(control)
+    {}
+
+
+    void
+    TNNMG::gauss_seidel_sweep(const SpatialProblem &problem, Vector<double> &v)
+    {
+      const SparseMatrix<double> &A       = *problem.A;
+      const Vector<double> &      r       = *problem.rhs;
+      const std::vector<bool> &   fixed   = *problem.fixed;
+      const ContactSet &          contact = *problem.contact;
+
+      for (global_dof_index i = 0; i < v.size(); ++i)
+        {
+          if (fixed[i])
+            continue;
+          const int node_index = contact.dof_to_node[i];
+          if (node_index < 0)
+            {
+              // Linear Gauss-Seidel update of a dof without friction.
+              double sum = r[i], diagonal = 0;
+              for (auto it = A.begin(i); it != A.end(i); ++it)
+                if (it->column() == i)
+                  diagonal = it->value();
+                else
+                  sum -= it->value() * v[it->column()];
+              v[i] = sum / diagonal;
+              continue;
+            }
+
+          const ContactNode &node = contact.nodes[node_index];
+          if (node.dofs[0] != i)
+            continue; // handled with the node's first dof
+
+          // Node-local problem: 1/2 x^T A_TT x - rho^T x + phi(|x|) with
+          // rho = r_T - sum_{j not in T} A_Tj v_j.
+          const unsigned int    d = node.n_dofs;
+          std::array<double, 4> A_TT{};
+          std::array<double, 2> rho{};
+          for (unsigned int k = 0; k < d; ++k)
+            {
+              const global_dof_index row = node.dofs[k];
+              rho[k]                     = r[row];
+              for (auto it = A.begin(row); it != A.end(row); ++it)
+                {
+                  const global_dof_index col = it->column();
+                  bool                   in_block = false;
+                  for (unsigned int l = 0; l < d; ++l)
+                    if (col == node.dofs[l])
+                      {
+                        A_TT[d * k + l] = it->value();
+                        in_block        = true;
+                      }
+                  if (!in_block)
+                    rho[k] -= it->value() * v[col];
+                }
+            }
+
+          const friction::NodePotential &phi = (*problem.potentials)[node_index];
+          if (d == 1)
+            {
+              const auto sol =
+                friction::solve_local_problem<1>({{A_TT[0]}}, {{rho[0]}}, phi);
+              v[node.dofs[0]] = sol.x[0];
+            }
+          else
+            {
+              const auto sol = friction::solve_local_problem<2>(A_TT, rho, phi);
+              v[node.dofs[0]] = sol.x[0];
+              v[node.dofs[1]] = sol.x[1];
+            }
+        }
+    }
+
+
+    double
+    TNNMG::line_search(const SpatialProblem &problem,
+                       const Vector<double> &v,
+                       const Vector<double> &c) const
+    {
+      // J(v + t c)' = c^T(A v - r) + t c^T A c + sum_i phi_i'(|y_i|) y_i.c_i/|y_i|
+      const double c_residual = -(c * residual); // residual = r - A v
+      const double cAc        = problem.A->matrix_norm_square(c);
+      const ContactSet &contact = *problem.contact;
+
+      const auto derivative = [&](const double t) {
+        double value = c_residual + t * cAc;
+        for (unsigned int n = 0; n < contact.nodes.size(); ++n)
+          {
+            const ContactNode &node = contact.nodes[n];
+            double             y[2] = {0, 0}, cn[2] = {0, 0}, s2 = 0, c2 = 0;
+            for (unsigned int k = 0; k < node.n_dofs; ++k)
+              {
+                cn[k] = c[node.dofs[k]];
+                y[k]  = v[node.dofs[k]] + t * cn[k];
+                s2 += y[k] * y[k];
+                c2 += cn[k] * cn[k];
+              }
+            if (c2 == 0)
+              continue;
+            const friction::NodePotential &phi = (*problem.potentials)[n];
+            if (s2 > 0)
+              {
+                const double s = std::sqrt(s2);
+                value += phi.derivative(s) * (y[0] * cn[0] + y[1] * cn[1]) / s;
+              }
+            else
+              value += phi.cohesion_force * std::sqrt(c2); // right derivative
+          }
+        return value;
+      };
+
+      if (!(derivative(0.) < 0))
+        return 0.;
+      double lo = 0, hi = 1;
+      while (derivative(hi) < 0 && hi < 1e9)
+        {
+          lo = hi;
+          hi *= 2;
+        }
+      for (unsigned int it = 0; it < 60 && hi - lo > 1e-12 * hi; ++it)
+        {
+          const double mid = 0.5 * (lo + hi);
+          if (derivative(mid) < 0)
+            lo = mid;
+          else
+            hi = mid;
+        }
+      return 0.5 * (lo + hi);
+    }
+
+
+    TNNMGStatistics
+    TNNMG::solve(const SpatialProblem &problem, Vector<double> &v)
+    {
+      const SparseMatrix<double> &A       = *problem.A;
+      const std::vector<bool> &   fixed   = *problem.fixed;
+      const ContactSet &          contact = *problem.contact;
+      const auto &                phis    = *problem.potentials;
+      const global_dof_index      n       = v.size();
+
+      residual.reinit(n);
+      newton_rhs.reinit(n);
+      correction_vector.reinit(n);
+      v_old.reinit(n);
+      increment.reinit(n);
+      truncated.assign(n, false);
+      hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
+
+      TNNMGStatistics stats;
+      for (unsigned int iteration = 0; iteration < control.max_iterations;
+           ++iteration)
+        {
+          ++stats.iterations;
+          v_old = v;
+
+          // 1. Nonlinear block Gauss-Seidel.
+          gauss_seidel_sweep(problem, v);
+
+          // 2. Truncation and the Newton system at the smoothed iterate.
+          A.residual(residual, v, *problem.rhs); // r - A v
+          for (global_dof_index i = 0; i < n; ++i)
+            truncated[i] = fixed[i];
+          newton_rhs = residual;
+          for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+            {
+              const ContactNode &   node = contact.nodes[k];
+              std::array<double, 2> y{}, grad{};
+              for (unsigned int l = 0; l < node.n_dofs; ++l)
+                y[l] = v[node.dofs[l]];
+              friction_gradient_and_hessian(
+                phis[k], y, node.n_dofs, grad, hessians[k]);
+              double max_hessian = 0, max_diagonal = 0;
+              for (unsigned int l = 0; l < node.n_dofs; ++l)
+                {
+                  max_hessian =
+                    std::max(max_hessian, hessians[k][node.n_dofs * l + l]);
+                  max_diagonal =
+                    std::max(max_diagonal, A.diag_element(node.dofs[l]));
+                }
+              const bool stuck =
+                (y[0] == 0 && y[1] == 0) ||
+                !(max_hessian <= control.truncation_ratio * max_diagonal);
+              for (unsigned int l = 0; l < node.n_dofs; ++l)
+                {
+                  truncated[node.dofs[l]] = stuck;
+                  newton_rhs[node.dofs[l]] -= grad[l];
+                }
+              if (stuck)
+                hessians[k] = {{0., 0., 0., 0.}};
+            }
+          for (global_dof_index i = 0; i < n; ++i)
+            if (truncated[i])
+              newton_rhs[i] = 0;
+
+          // 3. Linear correction.
+          TruncatedNewtonSystem system;
+          system.A             = &A;
+          system.contact       = &contact;
+          system.node_hessians = &hessians;
+          system.truncated     = &truncated;
+          correction_vector    = 0;
+          stats.linear_iterations +=
+            correction.solve(system, newton_rhs, correction_vector);
+          for (global_dof_index i = 0; i < n; ++i)
+            if (truncated[i])
+              correction_vector[i] = 0;
+
+          // 4. Line search.
+          if (std::isfinite(correction_vector.l2_norm()))
+            {
+              const double step = line_search(problem, v, correction_vector);
+              v.add(step, correction_vector);
+            }
+
+          increment = v;
+          increment -= v_old;
+          const double change = std::sqrt(A.matrix_norm_square(increment));
+          const double size   = std::sqrt(A.matrix_norm_square(v));
+          stats.relative_change = (size > 0) ? change / size : change;
+          if (!std::isfinite(stats.relative_change))
+            {
+              stats.converged = false;
+              return stats;
+            }
+          if (stats.relative_change <= control.tolerance)
+            {
+              stats.converged = true;
+              return stats;
+            }
+        }
+      return stats;
+    }
+
+
+    unsigned int
+    DirectCorrection::solve(const TruncatedNewtonSystem &system,
+                            const Vector<double> &       rhs,
+                            Vector<double> &             c)
+    {
+      const SparseMatrix<double> &A = *system.A;
+      if (matrix.empty() ||
+          &matrix.get_sparsity_pattern() != &A.get_sparsity_pattern())
+        matrix.reinit(A.get_sparsity_pattern());
+      matrix.copy_from(A);
+
+      const ContactSet &contact = *system.contact;
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          const ContactNode &node = contact.nodes[k];
+          for (unsigned int i = 0; i < node.n_dofs; ++i)
+            for (unsigned int j = 0; j < node.n_dofs; ++j)
+              matrix.add(node.dofs[i],
+                         node.dofs[j],
+                         (*system.node_hessians)[k][node.n_dofs * i + j]);
+        }
+      const std::vector<bool> &truncated = *system.truncated;
+      for (auto it = matrix.begin(); it != matrix.end(); ++it)
+        if (truncated[it->row()] || truncated[it->column()])
+          it->value() = (it->row() == it->column()) ? 1. : 0.;
+
+      dealii::SparseDirectUMFPACK solver;
+      solver.initialize(matrix);
+      solver.vmult(c, rhs);
+      return 1;
+    }
+
+
+    std::string
+    linear_correction_names()
+    {
+      return "direct";
+    }
+  } // namespace solvers
+} // namespace rsfcycle

@@ -538,6 +538,7 @@ namespace rsfcycle
     problem.fixed      = &fixed;
     problem.contact    = &contact;
     problem.potentials = &potentials;
+    problem.matrix_key = tau;
 
     const auto update_state = [&](const Vector<double> &v_new,
                                   const double          weight_new,

@@ -61,6 +61,8 @@ namespace rsfcycle
       const std::vector<bool> *                  fixed    = nullptr;
       const ContactSet *                         contact  = nullptr;
       const std::vector<friction::NodePotential> *potentials = nullptr;
+      /** Passed on to TruncatedNewtonSystem::matrix_key. */
+      double matrix_key = 0;
     };
 
     /**
@@ -75,6 +77,13 @@ namespace rsfcycle
       const ContactSet *                      contact     = nullptr;
       const std::vector<std::array<double, 4>> *node_hessians = nullptr;
       const std::vector<bool> *               truncated   = nullptr;
+      /**
+       * Identifies the content of A (here: the step size tau), so that a
+       * correction may cache what it derives from A. Entries of `truncated`
+       * that are not contact dofs (the fixed dofs) must not change while A
+       * keeps its key.
+       */
+      double matrix_key = 0;
     };
 
     /**

@@ -479,10 +479,7 @@ namespace rsfcycle
     std::vector<double> rates(contact.nodes.size());
     for (unsigned int k = 0; k < contact.nodes.size(); ++k)
       {
-        double s2 = 0;
-        for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
-          s2 += v[contact.nodes[k].dofs[l]] * v[contact.nodes[k].dofs[l]];
-        rates[k] = std::sqrt(s2);
+        rates[k] = solvers::tangential_norm(contact.nodes[k], v);
       }
     return rates;
   }
@@ -545,16 +542,17 @@ namespace rsfcycle
                                   std::vector<double> & alpha) {
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
-          double s2 = 0;
+          double vm[2] = {0, 0};
           for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
             {
-              const auto   dof = contact.nodes[k].dofs[l];
-              const double vm  = (1 - weight_new) * old.v[dof] +
-                                weight_new * v_new[dof];
-              s2 += vm * vm;
+              const auto dof = contact.nodes[k].dofs[l];
+              vm[l] = (1 - weight_new) * old.v[dof] + weight_new * v_new[dof];
             }
-          alpha[k] = friction::update_state(
-            state_law, node_info[k].params, old.alpha[k], std::sqrt(s2), tau);
+          alpha[k] = friction::update_state(state_law,
+                                            node_info[k].params,
+                                            old.alpha[k],
+                                            std::hypot(vm[0], vm[1]),
+                                            tau);
         }
     };
 

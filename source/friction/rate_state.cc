@@ -106,7 +106,7 @@ namespace rsfcycle
             {
               if (!(V > 0))
                 return alpha;
-              return alpha * std::exp(-x) -
+              return alpha * std::exp(-x) +
                      std::log(V / p.v_star) * std::expm1(-x);
             }
         }
@@ -116,7 +116,11 @@ namespace rsfcycle
 
     namespace
     {
-      /** x = (A + lambda I)^{-1} rho for d = 1, 2. */
+      /**
+       * x = (A + lambda I)^{-1} rho for d = 1, 2. For lambda > 1 it is
+       * computed as (A/lambda + I)^{-1} rho / lambda, so that the
+       * determinant cannot overflow for lambda up to 1e300.
+       */
       template <int d>
       std::array<double, d>
       shifted_solve(const std::array<double, d * d> &A,
@@ -128,23 +132,26 @@ namespace rsfcycle
           x[0] = rho[0] / (A[0] + lambda);
         else
           {
-            const double a00 = A[0] + lambda, a01 = A[1], a10 = A[2],
-                         a11 = A[3] + lambda;
+            const double scale = (lambda > 1) ? 1. / lambda : 1.;
+            const double shift = (lambda > 1) ? 1. : lambda;
+            const double a00 = A[0] * scale + shift, a01 = A[1] * scale,
+                         a10 = A[2] * scale, a11 = A[3] * scale + shift;
             const double det = a00 * a11 - a01 * a10;
-            x[0]             = (a11 * rho[0] - a01 * rho[1]) / det;
-            x[1]             = (-a10 * rho[0] + a00 * rho[1]) / det;
+            x[0] = (a11 * rho[0] - a01 * rho[1]) / det * scale;
+            x[1] = (-a10 * rho[0] + a00 * rho[1]) / det * scale;
           }
         return x;
       }
 
+      /** |x| without underflow of x^2 (slip rates may be ~1e-160 m/s). */
       template <int d>
       double
       norm(const std::array<double, d> &x)
       {
-        double s = 0;
-        for (const double xi : x)
-          s += xi * xi;
-        return std::sqrt(s);
+        if constexpr (d == 1)
+          return std::abs(x[0]);
+        else
+          return std::hypot(x[0], x[1]);
       }
     } // namespace
 
@@ -168,12 +175,20 @@ namespace rsfcycle
         const double lambda = std::exp(l);
         const auto   x      = shifted_solve<d>(A, rho, lambda);
         const double s      = norm<d>(x);
-        // ds/dlambda = - x^T (A + lambda I)^{-1} x / s
-        const auto y       = shifted_solve<d>(A, x, lambda);
-        double     xy      = 0;
-        for (unsigned int i = 0; i < d; ++i)
-          xy += x[i] * y[i];
-        const double ds = (s > 0) ? -xy / s : 0.;
+        // ds/dlambda = - x^T (A + lambda I)^{-1} x / s = -s e^T (A + lambda
+        // I)^{-1} e with e = x/s (no underflow for tiny s and huge lambda)
+        double ds = 0;
+        if (s > 0)
+          {
+            std::array<double, d> e;
+            for (unsigned int i = 0; i < d; ++i)
+              e[i] = x[i] / s;
+            const auto y  = shifted_solve<d>(A, e, lambda);
+            double     ey = 0;
+            for (unsigned int i = 0; i < d; ++i)
+              ey += e[i] * y[i];
+            ds = -s * ey;
+          }
         dF_dl = lambda * (s + lambda * ds - phi.second_derivative(s) * ds);
         return lambda * s - phi.derivative(s);
       };

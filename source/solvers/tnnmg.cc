@@ -31,8 +31,7 @@ namespace rsfcycle
                                     std::array<double, 2> &        grad,
                                     std::array<double, 4> &        hess)
       {
-        const double s = (d == 1) ? std::abs(y[0]) :
-                                    std::sqrt(y[0] * y[0] + y[1] * y[1]);
+        const double s = (d == 1) ? std::abs(y[0]) : std::hypot(y[0], y[1]);
         grad = {{0., 0.}};
         hess = {{0., 0., 0., 0.}};
         if (!(s > 0))
@@ -147,24 +146,22 @@ namespace rsfcycle
         for (unsigned int n = 0; n < contact.nodes.size(); ++n)
           {
             const ContactNode &node = contact.nodes[n];
-            double             y[2] = {0, 0}, cn[2] = {0, 0}, s2 = 0, c2 = 0;
+            double y[2] = {0, 0}, cn[2] = {0, 0};
             for (unsigned int k = 0; k < node.n_dofs; ++k)
               {
                 cn[k] = c[node.dofs[k]];
                 y[k]  = v[node.dofs[k]] + t * cn[k];
-                s2 += y[k] * y[k];
-                c2 += cn[k] * cn[k];
               }
-            if (c2 == 0)
+            const double c_norm = std::hypot(cn[0], cn[1]);
+            if (c_norm == 0)
               continue;
+            const double s = std::hypot(y[0], y[1]);
             const friction::NodePotential &phi = (*problem.potentials)[n];
-            if (s2 > 0)
-              {
-                const double s = std::sqrt(s2);
-                value += phi.derivative(s) * (y[0] * cn[0] + y[1] * cn[1]) / s;
-              }
+            if (s > 0)
+              value += phi.derivative(s) *
+                       ((y[0] / s) * cn[0] + (y[1] / s) * cn[1]);
             else
-              value += phi.cohesion_force * std::sqrt(c2); // right derivative
+              value += phi.cohesion_force * c_norm; // right derivative
           }
         return value;
       };

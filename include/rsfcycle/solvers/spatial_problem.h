@@ -9,6 +9,7 @@
 #include <rsfcycle/friction/rate_state.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace rsfcycle
@@ -27,6 +28,17 @@ namespace rsfcycle
       std::array<global_dof_index, 2> dofs{};
       unsigned int                    n_dofs = 0;
     };
+
+    /**
+     * |(v_T)| of one node, without forming squares (slip rates of stuck nodes
+     * can be ~1e-160 m/s, whose square underflows).
+     */
+    inline double
+    tangential_norm(const ContactNode &node, const dealii::Vector<double> &v)
+    {
+      return node.n_dofs == 1 ? std::abs(v[node.dofs[0]]) :
+                                std::hypot(v[node.dofs[0]], v[node.dofs[1]]);
+    }
 
     /**
      * The contact nodes of a mesh and, per degree of freedom, the node it

@@ -1,0 +1,54 @@
+#!/bin/bash
+# Quick start for rsfcycle on Debian 12.
+#   bash quickstart.sh run    install missing packages, build (Release), run
+#                             the 2D laboratory wedge prm/wedge-2d.prm
+#   bash quickstart.sh test   same setup, check formatting, run the tests
+# JOBS (default 2) sets the parallel build and test jobs.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode=${1:-}
+if [[ $mode != run && $mode != test ]]; then
+  echo "usage: bash quickstart.sh run|test" >&2
+  exit 2
+fi
+jobs=${JOBS:-2}
+
+# 1. Debian packages (only if one is missing; needs root).
+packages=(libdeal.ii-dev libsuitesparse-dev cmake g++ make numdiff
+  python3-matplotlib python3-numpy clang-format-14)
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [[ $status == installed ]] || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  if ((EUID != 0)); then
+    echo "missing Debian packages (run as root to install): ${missing[*]}" >&2
+    exit 1
+  fi
+  apt-get update
+  DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
+    "${missing[@]}"
+fi
+
+# 2. Configure and build (Release).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$jobs"
+
+# 3. Run or test.
+if [[ $mode == run ]]; then
+  build/rsfcycle prm/wedge-2d.prm
+  outdir=$(sed -n 's/^ *set Output directory *= *//p' prm/wedge-2d.prm)
+  echo "Output: $PWD/$outdir (parameters.prm, time-series.csv," \
+    "base-profile.csv, solution.pvd)"
+else
+  format=clang-format
+  command -v clang-format >/dev/null || format=clang-format-14
+  find include source tests \( -name '*.h' -o -name '*.cc' \) -print0 |
+    xargs -0 -r "$format" --dry-run -Werror ||
+    { echo "Formatting check failed: run $format -i on them" >&2; exit 1; }
+  echo "Formatting: OK"
+  cd build
+  exec ctest --output-on-failure -j"$jobs"
+fi

@@ -4,12 +4,10 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
-
+#include <iostream>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/scene.h>
-
-#include <iostream>
 #include <string>
 
 namespace

@@ -3,23 +3,28 @@
 
 namespace rsfcycle
 {
+  using dealii::Patterns::Anything;
   using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
-  using dealii::Patterns::Anything;
 
   void
   RunParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Dimension", "2", Integer(2, 3),
+    prm.declare_entry("Dimension",
+                      "2",
+                      Integer(2, 3),
                       "Space dimension: 2 (plane strain) or 3");
-    prm.declare_entry("Scene", "wedge", Selection(scenes::scene_names()),
+    prm.declare_entry("Scene",
+                      "wedge",
+                      Selection(scenes::scene_names()),
                       "The physical set-up; its parameters are in the "
                       "subsection of the same name");
-    prm.declare_entry("End time", "1000", Double(0),
-                      "Simulated time span [s]");
-    prm.declare_entry("Output directory", "output", Anything(),
+    prm.declare_entry("End time", "1000", Double(0), "Simulated time span [s]");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Anything(),
                       "Run folder for parameters.prm, log, CSV and VTU files");
   }
 
@@ -37,11 +42,17 @@ namespace rsfcycle
   MeshParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    prm.declare_entry("Global refinements", "3", Integer(0, 12),
+    prm.declare_entry("Global refinements",
+                      "3",
+                      Integer(0, 12),
                       "Uniform refinements of the coarse mesh");
-    prm.declare_entry("Local refinements", "4", Integer(0, 16),
+    prm.declare_entry("Local refinements",
+                      "4",
+                      Integer(0, 16),
                       "Further refinements toward the seismogenic patch");
-    prm.declare_entry("Refinement distance", "1.5", Double(0),
+    prm.declare_entry("Refinement distance",
+                      "1.5",
+                      Double(0),
                       "In every local refinement, cells whose centre is "
                       "closer to the patch than this multiple of their "
                       "diameter are refined [-]; the refined zone so "
@@ -64,17 +75,27 @@ namespace rsfcycle
   TimeSteppingParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    prm.declare_entry("Adaptive", "true", Bool(),
+    prm.declare_entry("Adaptive",
+                      "true",
+                      Bool(),
                       "Step doubling (true) or a fixed step (false)");
-    prm.declare_entry("Tolerance", "1e-5", Double(1e-300, 1),
+    prm.declare_entry("Tolerance",
+                      "1e-5",
+                      Double(1e-300, 1),
                       "Step-doubling tolerance delta on the state distance "
                       "(14) [-]");
-    prm.declare_entry("Initial step", "1e-2", Double(1e-300),
+    prm.declare_entry("Initial step",
+                      "1e-2",
+                      Double(1e-300),
                       "First guess of the step size [s]");
-    prm.declare_entry("Minimum step", "1e-9", Double(1e-300),
+    prm.declare_entry("Minimum step",
+                      "1e-9",
+                      Double(1e-300),
                       "Below this step size the run stops with a diagnosis "
                       "[s]");
-    prm.declare_entry("Maximum step", "100", Double(1e-300),
+    prm.declare_entry("Maximum step",
+                      "100",
+                      Double(1e-300),
                       "Upper bound of the step size [s]");
     prm.leave_subsection();
   }
@@ -96,28 +117,44 @@ namespace rsfcycle
   SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    prm.declare_entry("State law", "ageing", Selection("ageing|slip"),
+    prm.declare_entry("State law",
+                      "ageing",
+                      Selection("ageing|slip"),
                       "State evolution: ageing law (4) or slip law");
-    prm.declare_entry("Coupling", "fixed-point",
+    prm.declare_entry("Coupling",
+                      "fixed-point",
                       Selection("fixed-point|explicit"),
                       "Rate/state coupling: the fixed-point iteration (18) "
                       "or explicit decoupling (state from the old velocity)");
-    prm.declare_entry("Dynamics", "dynamic", Selection("dynamic|quasi-static"),
+    prm.declare_entry("Dynamics",
+                      "dynamic",
+                      Selection("dynamic|quasi-static"),
                       "Newmark with inertia (15), or without the mass term");
-    prm.declare_entry("Fixed-point tolerance", "1e-5", Double(1e-300, 1),
+    prm.declare_entry("Fixed-point tolerance",
+                      "1e-5",
+                      Double(1e-300, 1),
                       "epsilon of the stopping criterion (19) [-]");
-    prm.declare_entry("Maximum fixed-point iterations", "20", Integer(1, 1000),
+    prm.declare_entry("Maximum fixed-point iterations",
+                      "20",
+                      Integer(1, 1000),
                       "A step whose fixed point needs more is rejected and "
                       "halved");
-    prm.declare_entry("Linear correction", "direct",
+    prm.declare_entry("Linear correction",
+                      "direct",
                       Selection("direct"),
                       "Linear correction of TNNMG: direct (UMFPACK)");
-    prm.declare_entry("TNNMG tolerance", "1e-10", Double(1e-300, 1),
+    prm.declare_entry("TNNMG tolerance",
+                      "1e-10",
+                      Double(1e-300, 1),
                       "Stop TNNMG when the energy norm of the update, relative "
                       "to that of the iterate, is below this [-]");
-    prm.declare_entry("Maximum TNNMG iterations", "100", Integer(1, 100000),
+    prm.declare_entry("Maximum TNNMG iterations",
+                      "100",
+                      Integer(1, 100000),
                       "A spatial problem that needs more counts as failed");
-    prm.declare_entry("Truncation ratio", "1e10", Double(1),
+    prm.declare_entry("Truncation ratio",
+                      "1e10",
+                      Double(1),
                       "Contact nodes whose friction Hessian exceeds this "
                       "multiple of the diagonal of A are truncated [-]");
     prm.leave_subsection();
@@ -127,15 +164,16 @@ namespace rsfcycle
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    state_law                  = prm.get("State law");
-    coupling                   = prm.get("Coupling");
-    dynamics                   = prm.get("Dynamics");
-    fixed_point_tolerance      = prm.get_double("Fixed-point tolerance");
-    max_fixed_point_iterations = prm.get_integer("Maximum fixed-point iterations");
-    linear_correction          = prm.get("Linear correction");
-    tnnmg_tolerance            = prm.get_double("TNNMG tolerance");
-    max_tnnmg_iterations       = prm.get_integer("Maximum TNNMG iterations");
-    truncation_ratio           = prm.get_double("Truncation ratio");
+    state_law             = prm.get("State law");
+    coupling              = prm.get("Coupling");
+    dynamics              = prm.get("Dynamics");
+    fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
+    max_fixed_point_iterations =
+      prm.get_integer("Maximum fixed-point iterations");
+    linear_correction    = prm.get("Linear correction");
+    tnnmg_tolerance      = prm.get_double("TNNMG tolerance");
+    max_tnnmg_iterations = prm.get_integer("Maximum TNNMG iterations");
+    truncation_ratio     = prm.get_double("Truncation ratio");
     prm.leave_subsection();
   }
 
@@ -144,21 +182,32 @@ namespace rsfcycle
   OutputParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    prm.declare_entry("Output interval", "10", Double(0),
+    prm.declare_entry("Output interval",
+                      "10",
+                      Double(0),
                       "Simulated time between VTU snapshots [s]");
-    prm.declare_entry("Event output interval", "0.1", Double(0),
+    prm.declare_entry("Event output interval",
+                      "0.1",
+                      Double(0),
                       "Simulated time between VTU snapshots during events [s]");
-    prm.declare_entry("Profile interval", "1", Double(0),
+    prm.declare_entry("Profile interval",
+                      "1",
+                      Double(0),
                       "Simulated time between rows of base-profile.csv [s]");
-    prm.declare_entry("Event profile interval", "0.005", Double(0),
+    prm.declare_entry("Event profile interval",
+                      "0.005",
+                      Double(0),
                       "The same during events [s]");
-    prm.declare_entry("Event threshold", "10", Double(1e-300),
+    prm.declare_entry("Event threshold",
+                      "10",
+                      Double(1e-300),
                       "An event is where the maximum slip rate exceeds this "
                       "multiple of the convergence rate v0 [-]");
-    prm.declare_entry("Progress interval", "10", Double(0),
+    prm.declare_entry("Progress interval",
+                      "10",
+                      Double(0),
                       "Wall-clock time between progress lines [s]");
-    prm.declare_entry("Write VTU", "true", Bool(),
-                      "Write VTU/PVD snapshots");
+    prm.declare_entry("Write VTU", "true", Bool(), "Write VTU/PVD snapshots");
     prm.leave_subsection();
   }
 

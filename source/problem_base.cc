@@ -1,35 +1,28 @@
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/base/utilities.h>
-
-#include <deal.II/dofs/dof_tools.h>
-
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
-
-#include <deal.II/grid/grid_tools.h>
-
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
-
-#include <deal.II/numerics/data_out.h>
-
-#include <rsfcycle/ids.h>
-#include <rsfcycle/problem_base.h>
-#include <rsfcycle/time/step_doubling.h>
-
 #include <chrono>
 #include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/numerics/data_out.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <rsfcycle/ids.h>
+#include <rsfcycle/problem_base.h>
+#include <rsfcycle/time/step_doubling.h>
 
 namespace rsfcycle
 {
   template <int dim>
-  ProblemBase<dim>::ProblemBase(const Parameters &        parameters,
+  ProblemBase<dim>::ProblemBase(const Parameters         &parameters,
                                 const scenes::Scene<dim> &scene,
-                                std::ostream &            log)
+                                std::ostream             &log)
     : parameters(parameters)
     , scene(scene)
     , log(log)
@@ -44,10 +37,9 @@ namespace rsfcycle
     if (parameters.solver.linear_correction == "direct")
       linear_correction = std::make_unique<solvers::DirectCorrection>();
     else
-      throw std::invalid_argument("Solver/Linear correction = " +
-                                  parameters.solver.linear_correction +
-                                  ": allowed are " +
-                                  solvers::linear_correction_names());
+      throw std::invalid_argument(
+        "Solver/Linear correction = " + parameters.solver.linear_correction +
+        ": allowed are " + solvers::linear_correction_names());
     solvers::TNNMGControl control;
     control.tolerance        = parameters.solver.tnnmg_tolerance;
     control.max_iterations   = parameters.solver.max_tnnmg_iterations;
@@ -106,7 +98,10 @@ namespace rsfcycle
     scalar_constraints.close();
 
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_constraints, true);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    hanging_constraints,
+                                    true);
     sparsity_pattern.copy_from(dsp);
     mass_matrix.reinit(sparsity_pattern);
     viscosity_matrix.reinit(sparsity_pattern);
@@ -129,13 +124,12 @@ namespace rsfcycle
     const auto [bulk_modulus, nu] = scene.elastic_moduli();
     const double shear_modulus =
       3. * bulk_modulus * (1. - 2. * nu) / (2. * (1. + nu));
-    const double lambda = bulk_modulus - 2. / 3. * shear_modulus;
+    const double         lambda  = bulk_modulus - 2. / 3. * shear_modulus;
     const Tensor<1, dim> gravity = scene.gravity();
 
-    const QGauss<dim>  quadrature(fe.degree + 1);
-    FEValues<dim>      fe_values(fe, quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
+    const QGauss<dim> quadrature(fe.degree + 1);
+    FEValues<dim>     fe_values(
+      fe, quadrature, update_values | update_gradients | update_JxW_values);
     const unsigned int n = fe.n_dofs_per_cell();
     FullMatrix<double> cell_mass(n, n), cell_viscosity(n, n),
       cell_stiffness(n, n);
@@ -158,7 +152,8 @@ namespace rsfcycle
             const double JxW = fe_values.JxW(q);
             for (const unsigned int i : fe_values.dof_indices())
               {
-                const Tensor<1, dim> phi_i = fe_values[displacement].value(i, q);
+                const Tensor<1, dim> phi_i =
+                  fe_values[displacement].value(i, q);
                 const SymmetricTensor<2, dim> eps_i =
                   fe_values[displacement].symmetric_gradient(i, q);
                 const double div_i = trace(eps_i);
@@ -183,11 +178,8 @@ namespace rsfcycle
               }
           }
         cell->get_dof_indices(dof_indices);
-        hanging_constraints.distribute_local_to_global(cell_mass,
-                                                       cell_force,
-                                                       dof_indices,
-                                                       mass_matrix,
-                                                       body_force);
+        hanging_constraints.distribute_local_to_global(
+          cell_mass, cell_force, dof_indices, mass_matrix, body_force);
         hanging_constraints.distribute_local_to_global(cell_viscosity,
                                                        dof_indices,
                                                        viscosity_matrix);
@@ -216,10 +208,9 @@ namespace rsfcycle
       if (hanging_constraints.is_constrained(i))
         fixed[i] = true;
 
-    Vector<double>         weights(n_dofs);
+    Vector<double>            weights(n_dofs);
     const QTrapezoid<dim - 1> trapezoid;
-    FEFaceValues<dim>      fe_face(fe, trapezoid,
-                              update_values | update_JxW_values);
+    FEFaceValues<dim> fe_face(fe, trapezoid, update_values | update_JxW_values);
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     struct BaseVertex
     {
@@ -253,7 +244,7 @@ namespace rsfcycle
                 &tria, cell->level(), cell->index(), &scalar_dof_handler);
               for (const unsigned int v : face->vertex_indices())
                 {
-                  fixed[face->vertex_dof_index(v, 1)] = true;
+                  fixed[face->vertex_dof_index(v, 1)]         = true;
                   base_vertices[face->vertex_dof_index(v, 0)] = {
                     face->vertex(v),
                     scalar_cell->face(f)->vertex_dof_index(v, 0),
@@ -272,7 +263,8 @@ namespace rsfcycle
         }
     // backstop dofs that are hanging are set by distribute(), not directly
     backstop_dofs.erase(
-      std::remove_if(backstop_dofs.begin(), backstop_dofs.end(),
+      std::remove_if(backstop_dofs.begin(),
+                     backstop_dofs.end(),
                      [&](const auto &d) {
                        return hanging_constraints.is_constrained(d.first);
                      }),
@@ -287,7 +279,7 @@ namespace rsfcycle
       {
         if (hanging_constraints.is_constrained(x_dof))
           continue;
-        solvers::ContactNode node;
+        solvers::ContactNode                 node;
         std::vector<types::global_dof_index> tangential = {x_dof};
         if (dim == 3)
           tangential.push_back(vertex.lateral_dof);
@@ -329,8 +321,8 @@ namespace rsfcycle
     for (types::global_dof_index i = 0; i < rhs.size(); ++i)
       if (fixed[i])
         rhs[i] = 0;
-    Vector<double>       u(dof_handler.n_dofs());
-    SparseDirectUMFPACK  direct;
+    Vector<double>      u(dof_handler.n_dofs());
+    SparseDirectUMFPACK direct;
     direct.initialize(K);
     direct.vmult(u, rhs);
     hanging_constraints.distribute(u);
@@ -345,7 +337,7 @@ namespace rsfcycle
       total += reaction[node_info[k].normal_dof];
     for (unsigned int k = 0; k < contact.nodes.size(); ++k)
       {
-        const double r = reaction[node_info[k].normal_dof];
+        const double r            = reaction[node_info[k].normal_dof];
         node_info[k].normal_force = std::abs(r);
         if (r * total < 0)
           ++n_tensile;
@@ -402,6 +394,16 @@ namespace rsfcycle
           }
         observation_weights.push_back(w);
       }
+  }
+
+
+  template <int dim>
+  double
+  ProblemBase<dim>::energy(const BodyState &state) const
+  {
+    return 0.5 * mass_matrix.matrix_norm_square(state.v) +
+           0.5 * stiffness_matrix.matrix_norm_square(state.u) -
+           body_force * state.u;
   }
 
 
@@ -498,8 +500,8 @@ namespace rsfcycle
                                  const double     t,
                                  const double     tau)
   {
-    const bool                  dynamic = parameters.solver.dynamics == "dynamic";
-    const SparseMatrix<double> &A       = step_matrix(tau);
+    const bool dynamic            = parameters.solver.dynamics == "dynamic";
+    const SparseMatrix<double> &A = step_matrix(tau);
     const unsigned int          n_nodes = contact.nodes.size();
 
     Vector<double> rhs(body_force), tmp(old.u);
@@ -539,7 +541,7 @@ namespace rsfcycle
 
     const auto update_state = [&](const Vector<double> &v_new,
                                   const double          weight_new,
-                                  std::vector<double> & alpha) {
+                                  std::vector<double>  &alpha) {
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
           double vm[2] = {0, 0};
@@ -556,7 +558,7 @@ namespace rsfcycle
         }
     };
 
-    std::vector<double> alpha = old.alpha, alpha_new(n_nodes);
+    std::vector<double> alpha    = old.alpha, alpha_new(n_nodes);
     const bool explicit_coupling = parameters.solver.coupling == "explicit";
     if (explicit_coupling)
       update_state(old.v, 0., alpha);
@@ -567,7 +569,7 @@ namespace rsfcycle
       {
         for (unsigned int i = 0; i < n_nodes; ++i)
           potentials[i].alpha = alpha[i];
-        const solvers::TNNMGStatistics stats = tnnmg->solve(problem, next.v);
+        const solvers::TNNMGStatistics stats   = tnnmg->solve(problem, next.v);
         next.statistics.fixed_point_iterations = k;
         next.statistics.tnnmg_iterations += stats.iterations;
         next.statistics.linear_iterations += stats.linear_iterations;
@@ -633,10 +635,10 @@ namespace rsfcycle
   void
   ProblemBase<dim>::output_results(const BodyState &state, const double t)
   {
-    TimerOutput::Scope scope(timer, "Output");
-    const unsigned int n_nodes = contact.nodes.size();
-    const std::vector<double> rates = slip_rates(state.v);
-    Vector<double> slip_rate(scalar_dof_handler.n_dofs()),
+    TimerOutput::Scope        scope(timer, "Output");
+    const unsigned int        n_nodes = contact.nodes.size();
+    const std::vector<double> rates   = slip_rates(state.v);
+    Vector<double>            slip_rate(scalar_dof_handler.n_dofs()),
       log_slip_rate(scalar_dof_handler.n_dofs()),
       theta(scalar_dof_handler.n_dofs()), mu(scalar_dof_handler.n_dofs()),
       traction(scalar_dof_handler.n_dofs()),
@@ -645,13 +647,15 @@ namespace rsfcycle
     log_slip_rate   = std::log10(1e-20);
     for (unsigned int k = 0; k < n_nodes; ++k)
       {
-        const auto &info = node_info[k];
-        const auto  dof  = info.scalar_dof;
-        slip_rate[dof]   = rates[k];
+        const auto &info   = node_info[k];
+        const auto  dof    = info.scalar_dof;
+        slip_rate[dof]     = rates[k];
         log_slip_rate[dof] = std::log10(std::max(rates[k] / v0, 1e-20));
-        theta[dof] = info.params.L / info.params.v_star * std::exp(state.alpha[k]);
-        mu[dof] = friction::friction_coefficient(info.params, state.alpha[k], rates[k]);
-        traction[dof] = state.shear_traction[k];
+        theta[dof] =
+          info.params.L / info.params.v_star * std::exp(state.alpha[k]);
+        mu[dof] =
+          friction::friction_coefficient(info.params, state.alpha[k], rates[k]);
+        traction[dof]      = state.shear_traction[k];
         normal_stress[dof] = info.normal_force / info.weight;
       }
     for (auto *vec : {&slip_rate, &theta, &mu, &traction, &normal_stress})
@@ -660,20 +664,25 @@ namespace rsfcycle
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_part(dim, DataComponentInterpretation::component_is_part_of_vector);
+      vector_part(dim,
+                  DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(state.u,
                              std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data, vector_part);
+                             DataOut<dim>::type_dof_data,
+                             vector_part);
     data_out.add_data_vector(state.v,
                              std::vector<std::string>(dim, "velocity"),
-                             DataOut<dim>::type_dof_data, vector_part);
+                             DataOut<dim>::type_dof_data,
+                             vector_part);
     data_out.add_data_vector(scalar_dof_handler, slip_rate, "slip_rate");
-    data_out.add_data_vector(scalar_dof_handler, log_slip_rate,
+    data_out.add_data_vector(scalar_dof_handler,
+                             log_slip_rate,
                              "log10_slip_rate_over_v0");
     data_out.add_data_vector(scalar_dof_handler, theta, "state");
     data_out.add_data_vector(scalar_dof_handler, mu, "friction_coefficient");
     data_out.add_data_vector(scalar_dof_handler, traction, "shear_traction");
-    data_out.add_data_vector(scalar_dof_handler, normal_stress,
+    data_out.add_data_vector(scalar_dof_handler,
+                             normal_stress,
                              "normal_stress");
     Vector<float> material(tria.n_active_cells());
     for (const auto &cell : tria.active_cell_iterators())
@@ -738,8 +747,8 @@ namespace rsfcycle
     }
     log << "Solver: " << parameters.solver.coupling << " coupling, "
         << parameters.solver.linear_correction << " linear correction, "
-        << parameters.solver.state_law << " law, "
-        << parameters.solver.dynamics << std::endl;
+        << parameters.solver.state_law << " law, " << parameters.solver.dynamics
+        << std::endl;
 
     // Base profile: node order along the base.
     std::vector<unsigned int> order(n_nodes);
@@ -750,8 +759,8 @@ namespace rsfcycle
       const double sj = scene.along_base_coordinate(node_info[j].position);
       if (si != sj)
         return si < sj;
-      return (dim == 3) && node_info[i].position[dim - 1] <
-                             node_info[j].position[dim - 1];
+      return (dim == 3) &&
+             node_info[i].position[dim - 1] < node_info[j].position[dim - 1];
     });
 
     std::ofstream series(dir + "/time-series.csv");
@@ -780,10 +789,10 @@ namespace rsfcycle
       }
     profile << std::setprecision(8);
 
-    BodyState state = initial;
-    double    t     = 0;
-    const double end_time = parameters.run.end_time;
-    const double v0       = scene.convergence_rate();
+    BodyState    state     = initial;
+    double       t         = 0;
+    const double end_time  = parameters.run.end_time;
+    const double v0        = scene.convergence_rate();
     const double threshold = parameters.output.event_threshold * v0;
 
     time::StepDoubling<BodyState> controller(
@@ -799,7 +808,7 @@ namespace rsfcycle
       parameters.time_stepping.maximum_step,
       parameters.time_stepping.adaptive);
 
-    const auto write_profile = [&](const double time,
+    const auto write_profile = [&](const double               time,
                                    const std::vector<double> &rates) {
       profile << time;
       for (const unsigned int k : order)
@@ -812,12 +821,12 @@ namespace rsfcycle
     write_profile(t, slip_rates(state.v));
     double last_output = 0, last_profile = 0;
 
-    unsigned int step = 0, n_events = 0, max_fixed_point = 0;
+    unsigned int  step = 0, n_events = 0, max_fixed_point = 0;
     unsigned long total_problems = 0;
-    bool         in_event = false;
-    double       min_dt = 1e300, max_dt = 0;
-    const auto   wall_start    = std::chrono::steady_clock::now();
-    auto         last_progress = wall_start;
+    bool          in_event       = false;
+    double        min_dt = 1e300, max_dt = 0;
+    const auto    wall_start    = std::chrono::steady_clock::now();
+    auto          last_progress = wall_start;
 
     log << "*** Time loop to t = " << end_time << " s" << std::endl;
     {
@@ -838,11 +847,11 @@ namespace rsfcycle
           const double dt = controller.last_step_size();
           min_dt          = std::min(min_dt, dt);
           max_dt          = std::max(max_dt, dt);
-          max_fixed_point = std::max(max_fixed_point,
-                                     state.statistics.fixed_point_iterations);
+          max_fixed_point =
+            std::max(max_fixed_point, state.statistics.fixed_point_iterations);
 
           const std::vector<double> rates = slip_rates(state.v);
-          const auto   max_it = std::max_element(rates.begin(), rates.end());
+          const auto   max_it   = std::max_element(rates.begin(), rates.end());
           const double max_rate = (max_it == rates.end()) ? 0. : *max_it;
           if (!in_event && max_rate > threshold)
             {
@@ -869,25 +878,25 @@ namespace rsfcycle
 
           // Profiles and snapshots at their interval, denser during events.
           const double eps = 1e-12 * std::max(1., t);
-          if (t >= last_profile + (in_event ?
-                                     parameters.output.event_profile_interval :
-                                     parameters.output.profile_interval) -
+          if (t >= last_profile +
+                     (in_event ? parameters.output.event_profile_interval :
+                                 parameters.output.profile_interval) -
                      eps)
             {
               write_profile(t, rates);
               last_profile = t;
             }
           if (parameters.output.write_vtu &&
-              t >= last_output + (in_event ?
-                                    parameters.output.event_output_interval :
-                                    parameters.output.output_interval) -
+              t >= last_output +
+                     (in_event ? parameters.output.event_output_interval :
+                                 parameters.output.output_interval) -
                      eps)
             {
               output_results(state, t);
               last_output = t;
             }
 
-          const auto now = std::chrono::steady_clock::now();
+          const auto   now = std::chrono::steady_clock::now();
           const double since =
             std::chrono::duration<double>(now - last_progress).count();
           if (since >= parameters.output.progress_interval || t >= end_time)
@@ -898,14 +907,14 @@ namespace rsfcycle
               const double eta = elapsed / t * (end_time - t);
               log << "*** Step " << step << ": t = " << std::setprecision(6)
                   << t << " s / " << end_time << " s, dt = " << dt
-                  << " s, max V = " << max_rate / v0 << " v0, events = "
-                  << n_events << ", wall " << format_duration(elapsed)
-                  << ", ETA " << format_duration(eta) << "\n"
+                  << " s, max V = " << max_rate / v0
+                  << " v0, events = " << n_events << ", wall "
+                  << format_duration(elapsed) << ", ETA "
+                  << format_duration(eta) << "\n"
                   << "    solver: " << state.statistics.fixed_point_iterations
                   << " fixed-point, " << state.statistics.tnnmg_iterations
                   << " TNNMG, " << state.statistics.linear_iterations
-                  << " linear iterations; "
-                  << controller.n_spatial_problems()
+                  << " linear iterations; " << controller.n_spatial_problems()
                   << " spatial problems this step" << std::endl;
               series.flush();
               profile.flush();
@@ -916,8 +925,8 @@ namespace rsfcycle
       output_results(state, t);
 
     log << "Summary: " << step << " steps, " << total_problems
-        << " spatial problems, " << n_events << " events, step size "
-        << min_dt << " s to " << max_dt << " s, max fixed-point iterations "
+        << " spatial problems, " << n_events << " events, step size " << min_dt
+        << " s to " << max_dt << " s, max fixed-point iterations "
         << max_fixed_point << std::endl;
     timer.print_summary();
   }

@@ -10,12 +10,11 @@
 //    mu(0) = 0, mu increasing in V, mu' > 0 and finite (capped at 1e300);
 //  - mu' against a centred difference quotient of mu;
 //  - the steady-state coefficient against mu* + (a - b) log(V/V*).
-#include <rsfcycle/friction/rate_state.h>
+#include "tests.h"
 
 #include <cmath>
 #include <limits>
-
-#include "tests.h"
+#include <rsfcycle/friction/rate_state.h>
 
 using namespace rsfcycle::friction;
 
@@ -40,7 +39,7 @@ main()
           p.v_star * std::exp(-(p.mu_star + p.b * alpha) / p.a);
         const double plain = p.a * std::asinh(V / (2 * v_theta));
         const double ours  = friction_coefficient(p, alpha, V);
-        max_rel = std::max(max_rel, std::abs(ours - plain) / plain);
+        max_rel            = std::max(max_rel, std::abs(ours - plain) / plain);
       }
   dealii::deallog << "max relative difference to plain asinh < 1e-12: "
                   << (max_rel < 1e-12 ? "yes" : "no") << std::endl;
@@ -69,15 +68,14 @@ main()
         {
           const double mu  = friction_coefficient(q, alpha, V);
           const double dmu = friction_coefficient_derivative(q, alpha, V);
-          finite           = finite && std::isfinite(mu) && std::isfinite(dmu) &&
-                   dmu > 0;
+          finite = finite && std::isfinite(mu) && std::isfinite(dmu) && dmu > 0;
           monotone = monotone && mu >= previous;
           previous = mu;
         }
       dealii::deallog << "alpha = " << alpha
                       << ": mu(0) = " << friction_coefficient(q, alpha, 0.)
-                      << ", mu(10 m/s) = " << friction_coefficient(q, alpha, 10.)
-                      << ", mu'(0) = "
+                      << ", mu(10 m/s) = "
+                      << friction_coefficient(q, alpha, 10.) << ", mu'(0) = "
                       << friction_coefficient_derivative(q, alpha, 0.)
                       << ", finite: " << (finite ? "yes" : "no")
                       << ", monotone: " << (monotone ? "yes" : "no")
@@ -102,6 +100,5 @@ main()
         std::max(max_derivative_error, std::abs(fd - exact) / exact);
     }
   dealii::deallog << "derivative matches difference quotient to 1e-6: "
-                  << (max_derivative_error < 1e-6 ? "yes" : "no")
-                  << std::endl;
+                  << (max_derivative_error < 1e-6 ? "yes" : "no") << std::endl;
 }

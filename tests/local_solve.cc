@@ -10,25 +10,24 @@
 //    fast one (|x| ~ 1 m/s): finite, positive, residual at round-off.
 // The printed log10|x| values were checked against the scalar equation
 // a s + N mu(s) + W = |rho| solved by hand for the 1-component cases.
-#include <rsfcycle/friction/rate_state.h>
+#include "tests.h"
 
 #include <algorithm>
 #include <cmath>
-
-#include "tests.h"
+#include <rsfcycle/friction/rate_state.h>
 
 using namespace rsfcycle::friction;
 
 template <int d>
 void
-check(const std::string &                name,
-      const std::array<double, d * d> &  A,
-      const std::array<double, d> &      rho,
-      const NodePotential &              phi)
+check(const std::string               &name,
+      const std::array<double, d * d> &A,
+      const std::array<double, d>     &rho,
+      const NodePotential             &phi)
 {
   const auto   sol = solve_local_problem<d>(A, rho, phi);
-  const double s   = (d == 1) ? std::abs(sol.x[0]) :
-                                std::hypot(sol.x[0], sol.x[d - 1]);
+  const double s =
+    (d == 1) ? std::abs(sol.x[0]) : std::hypot(sol.x[0], sol.x[d - 1]);
   dealii::deallog << name << ": ";
   if (s == 0)
     {
@@ -45,13 +44,14 @@ check(const std::string &                name,
       rho2 += rho[i] * rho[i];
     }
   dealii::deallog << "log10|x| = " << std::log10(s) << ", relative residual < "
-                  << "1e-10: " << (std::sqrt(res2 / rho2) < 1e-10 ? "yes" : "no");
+                  << "1e-10: "
+                  << (std::sqrt(res2 / rho2) < 1e-10 ? "yes" : "no");
   if (d == 2)
     dealii::deallog << ", angle(x, rho) = "
-                    << std::acos(std::min(
-                         1.,
-                         ((sol.x[0] / s) * rho[0] + (sol.x[d - 1] / s) * rho[d - 1]) /
-                           std::sqrt(rho2)))
+                    << std::acos(std::min(1.,
+                                          ((sol.x[0] / s) * rho[0] +
+                                           (sol.x[d - 1] / s) * rho[d - 1]) /
+                                            std::sqrt(rho2)))
                     << " rad";
   dealii::deallog << std::endl;
 }
@@ -85,9 +85,10 @@ main()
   // 3D: two tangential components.
   check<2>("3D stick", {{1e4, 0, 0, 1e4}}, {{0.03, 0.03}}, stable);
   check<2>("3D slip isotropic", {{1e4, 0, 0, 1e4}}, {{1.5, 2.0}}, stable);
-  check<2>("3D slip anisotropic", {{1e4, 3e3, 3e3, 2e4}}, {{1.5, 2.0}},
-           stable);
+  check<2>("3D slip anisotropic", {{1e4, 3e3, 3e3, 2e4}}, {{1.5, 2.0}}, stable);
   check<2>("3D fast anisotropic", {{1., 0.3, 0.3, 2.}}, {{2.0, 2.5}}, stable);
-  check<2>("3D nearly stuck patch", {{1e4, 3e3, 3e3, 2e4}}, {{0.04, 0.031}},
+  check<2>("3D nearly stuck patch",
+           {{1e4, 3e3, 3e3, 2e4}},
+           {{0.04, 0.031}},
            unstable);
 }

@@ -6,11 +6,10 @@
 // theta = theta0 + t, and no division by V may happen); and the slip law
 // against its analytic solution log(theta V/L) = log(theta0 V/L) e^{-Vt/L},
 // with V = 0 leaving the state unchanged.
-#include <rsfcycle/friction/rate_state.h>
+#include "tests.h"
 
 #include <cmath>
-
-#include "tests.h"
+#include <rsfcycle/friction/rate_state.h>
 
 using namespace rsfcycle::friction;
 
@@ -53,7 +52,8 @@ main()
       if (V > 0)
         {
           const double psi0 = std::log(theta0 * V / p.L);
-          alpha_exact = psi0 * std::exp(-V * t_end / p.L) - std::log(V / p.v_star);
+          alpha_exact =
+            psi0 * std::exp(-V * t_end / p.L) - std::log(V / p.v_star);
         }
       dealii::deallog << "slip V = " << V << ": alpha = " << alpha
                       << ", |error| < 1e-12: "

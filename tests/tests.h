@@ -6,7 +6,6 @@
 #define rsfcycle_tests_h
 
 #include <deal.II/base/logstream.h>
-
 #include <fstream>
 #include <iomanip>
 

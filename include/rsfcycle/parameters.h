@@ -2,7 +2,6 @@
 #define rsfcycle_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 
 namespace rsfcycle
@@ -12,9 +11,9 @@ namespace rsfcycle
   /** Top level: which scene, in which dimension, for how long, where to. */
   struct RunParameters
   {
-    unsigned int dimension = 2;
-    std::string  scene     = "wedge";
-    double       end_time  = 1000;
+    unsigned int dimension        = 2;
+    std::string  scene            = "wedge";
+    double       end_time         = 1000;
     std::string  output_directory = "output";
 
     static void
@@ -54,15 +53,15 @@ namespace rsfcycle
   /** Subsection "Solver": rate/state coupling, TNNMG, linear correction. */
   struct SolverParameters
   {
-    std::string  state_law              = "ageing";
-    std::string  coupling               = "fixed-point";
-    std::string  dynamics               = "dynamic";
-    double       fixed_point_tolerance  = 1e-5;
+    std::string  state_law                  = "ageing";
+    std::string  coupling                   = "fixed-point";
+    std::string  dynamics                   = "dynamic";
+    double       fixed_point_tolerance      = 1e-5;
     unsigned int max_fixed_point_iterations = 20;
-    std::string  linear_correction      = "direct";
-    double       tnnmg_tolerance        = 1e-10;
-    unsigned int max_tnnmg_iterations   = 100;
-    double       truncation_ratio       = 1e10;
+    std::string  linear_correction          = "direct";
+    double       tnnmg_tolerance            = 1e-10;
+    unsigned int max_tnnmg_iterations       = 100;
+    double       truncation_ratio           = 1e10;
 
     static void
     declare_parameters(ParameterHandler &prm);

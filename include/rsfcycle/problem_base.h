@@ -2,27 +2,21 @@
 #define rsfcycle_problem_base_h
 
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
-
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
+#include <memory>
+#include <optional>
+#include <ostream>
 #include <rsfcycle/friction/rate_state.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
-
-#include <memory>
-#include <optional>
-#include <ostream>
 #include <vector>
 
 namespace rsfcycle
@@ -63,9 +57,9 @@ namespace rsfcycle
   class ProblemBase
   {
   public:
-    ProblemBase(const Parameters &        parameters,
+    ProblemBase(const Parameters         &parameters,
                 const scenes::Scene<dim> &scene,
-                std::ostream &            log);
+                std::ostream             &log);
     ~ProblemBase();
 
     /** Mesh, dofs, matrices, normal stress, initial state. */
@@ -99,6 +93,13 @@ namespace rsfcycle
       return initial;
     }
 
+    /**
+     * Mechanical energy 1/2 v^T M v + 1/2 u^T K u - f^T u (kinetic, elastic,
+     * and the potential of the body force f).
+     */
+    double
+    energy(const BodyState &state) const;
+
     /** Physical vertical displacement at the scene's observation points. */
     std::vector<double>
     observed_uplift(const Vector<double> &u) const;
@@ -106,10 +107,10 @@ namespace rsfcycle
     /** Contact node k: position, lumped weight, normal force. */
     struct NodeInfo
     {
-      Point<dim>           position;
-      double               weight       = 0;
-      double               normal_force = 0;
-      friction::Parameters params;
+      Point<dim>              position;
+      double                  weight       = 0;
+      double                  normal_force = 0;
+      friction::Parameters    params;
       types::global_dof_index scalar_dof = 0;
       types::global_dof_index normal_dof = 0;
     };
@@ -150,9 +151,9 @@ namespace rsfcycle
     void
     output_results(const BodyState &state, double t);
 
-    const Parameters &        parameters;
+    const Parameters         &parameters;
     const scenes::Scene<dim> &scene;
-    std::ostream &            log;
+    std::ostream             &log;
     TimerOutput               timer;
 
     Triangulation<dim>        tria;
@@ -172,10 +173,10 @@ namespace rsfcycle
     /** Backstop dofs with their component (inhomogeneous Dirichlet). */
     std::vector<std::pair<types::global_dof_index, unsigned int>> backstop_dofs;
 
-    solvers::ContactSet    contact;
-    std::vector<NodeInfo>  node_info;
-    double                 contact_area = 0;
-    friction::StateLaw     state_law;
+    solvers::ContactSet   contact;
+    std::vector<NodeInfo> node_info;
+    double                contact_area = 0;
+    friction::StateLaw    state_law;
 
     /** Step matrices for the last few step sizes (A depends on tau only). */
     std::vector<std::pair<double, std::unique_ptr<SparseMatrix<double>>>>
@@ -191,7 +192,7 @@ namespace rsfcycle
       observation_weights;
 
     std::vector<std::pair<double, std::string>> pvd_records;
-    unsigned int                                 n_snapshots = 0;
+    unsigned int                                n_snapshots = 0;
   };
 } // namespace rsfcycle
 

@@ -1,7 +1,6 @@
-#include <rsfcycle/friction/rate_state.h>
-
 #include <algorithm>
 #include <limits>
+#include <rsfcycle/friction/rate_state.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -10,8 +9,8 @@ namespace rsfcycle
   {
     namespace
     {
-      constexpr double log_two       = 0.69314718055994530942;
-      constexpr double max_exponent  = 690.; // exp(690) ~ 1e300
+      constexpr double log_two        = 0.69314718055994530942;
+      constexpr double max_exponent   = 690.; // exp(690) ~ 1e300
       constexpr double derivative_cap = 1e300;
 
       /** log(exp(x) + exp(y)) without overflow. */
@@ -39,8 +38,9 @@ namespace rsfcycle
 
 
     double
-    friction_coefficient(const Parameters &p, const double alpha,
-                         const double V)
+    friction_coefficient(const Parameters &p,
+                         const double      alpha,
+                         const double      V)
     {
       if (!(V > 0))
         return 0.;
@@ -56,8 +56,9 @@ namespace rsfcycle
 
 
     double
-    friction_coefficient_derivative(const Parameters &p, const double alpha,
-                                    const double V)
+    friction_coefficient_derivative(const Parameters &p,
+                                    const double      alpha,
+                                    const double      V)
     {
       const double log_v_theta = p.log_v_theta(alpha);
       if (V > 0)
@@ -66,11 +67,10 @@ namespace rsfcycle
           if (log_z > 0)
             // a / (V sqrt(1 + z^-2))
             return p.a / (V * std::sqrt(1. + std::exp(-2. * log_z)));
-          const double z        = std::exp(log_z);
-          const double exponent = std::log(p.a) - log_two - log_v_theta -
-                                  0.5 * std::log1p(z * z);
-          return exponent > max_exponent ? derivative_cap :
-                                           std::exp(exponent);
+          const double z = std::exp(log_z);
+          const double exponent =
+            std::log(p.a) - log_two - log_v_theta - 0.5 * std::log1p(z * z);
+          return exponent > max_exponent ? derivative_cap : std::exp(exponent);
         }
       const double exponent = std::log(p.a) - log_two - log_v_theta;
       return exponent > max_exponent ? derivative_cap : std::exp(exponent);
@@ -94,16 +94,14 @@ namespace rsfcycle
       const double x = V * tau / p.L;
       switch (law)
         {
-          case StateLaw::ageing:
-            {
+            case StateLaw::ageing: {
               // phi1(x) = (1 - e^{-x}) / x, -> 1 for x -> 0
               const double phi1 = (x > 1e-300) ? -std::expm1(-x) / x : 1.;
               return log_add_exp(alpha - x,
                                  std::log(p.v_star * tau / p.L) +
                                    std::log(phi1));
             }
-          case StateLaw::slip:
-            {
+            case StateLaw::slip: {
               if (!(V > 0))
                 return alpha;
               return alpha * std::exp(-x) +
@@ -124,7 +122,7 @@ namespace rsfcycle
       template <int d>
       std::array<double, d>
       shifted_solve(const std::array<double, d * d> &A,
-                    const std::array<double, d> &    rho,
+                    const std::array<double, d>     &rho,
                     const double                     lambda)
       {
         std::array<double, d> x;
@@ -137,8 +135,8 @@ namespace rsfcycle
             const double a00 = A[0] * scale + shift, a01 = A[1] * scale,
                          a10 = A[2] * scale, a11 = A[3] * scale + shift;
             const double det = a00 * a11 - a01 * a10;
-            x[0] = (a11 * rho[0] - a01 * rho[1]) / det * scale;
-            x[1] = (-a10 * rho[0] + a00 * rho[1]) / det * scale;
+            x[0]             = (a11 * rho[0] - a01 * rho[1]) / det * scale;
+            x[1]             = (-a10 * rho[0] + a00 * rho[1]) / det * scale;
           }
         return x;
       }
@@ -159,8 +157,8 @@ namespace rsfcycle
     template <int d>
     LocalSolution<d>
     solve_local_problem(const std::array<double, d * d> &A,
-                        const std::array<double, d> &    rho,
-                        const NodePotential &            phi)
+                        const std::array<double, d>     &rho,
+                        const NodePotential             &phi)
     {
       LocalSolution<d> result;
       const double     rho_norm = norm<d>(rho);
@@ -195,11 +193,11 @@ namespace rsfcycle
 
       // Bracket the root. Start where lambda = phi'(s0)/s0 with s0 = |A^-1
       // rho| (an upper bound of s), then expand by factors of 10.
-      const double s0 = norm<d>(shifted_solve<d>(A, rho, 0.));
-      double       l  = std::log(std::max(phi.derivative(s0) / s0, 1e-300));
-      double       dF;
-      double       f  = F(l, dF);
-      double       lo = l, hi = l;
+      const double     s0 = norm<d>(shifted_solve<d>(A, rho, 0.));
+      double           l  = std::log(std::max(phi.derivative(s0) / s0, 1e-300));
+      double           dF;
+      double           f  = F(l, dF);
+      double           lo = l, hi = l;
       constexpr double l_min = -690., l_max = 690.;
       if (f < 0)
         {

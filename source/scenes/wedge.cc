@@ -1,11 +1,8 @@
+#include <cmath>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/grid/grid_generator.h>
-
 #include <rsfcycle/ids.h>
 #include <rsfcycle/scenes/wedge.h>
-
-#include <cmath>
 
 namespace rsfcycle
 {
@@ -17,72 +14,122 @@ namespace rsfcycle
     {
       prm.enter_subsection("Wedge");
       {
-        prm.declare_entry("Length", "1.0", Patterns::Double(1e-6),
+        prm.declare_entry("Length",
+                          "1.0",
+                          Patterns::Double(1e-6),
                           "Horizontal distance trench-backstop [m]");
-        prm.declare_entry("Depth", "0.27", Patterns::Double(1e-6),
+        prm.declare_entry("Depth",
+                          "0.27",
+                          Patterns::Double(1e-6),
                           "Height of the vertical backstop [m]; the dip is "
                           "atan(Depth/Length)");
-        prm.declare_entry("Width", "0.6", Patterns::Double(1e-6),
+        prm.declare_entry("Width",
+                          "0.6",
+                          Patterns::Double(1e-6),
                           "Extent in z of the 3D wedge [m] (unused in 2D)");
-        prm.declare_entry("Patch down-dip end", "0.35", Patterns::Double(0),
+        prm.declare_entry("Patch down-dip end",
+                          "0.35",
+                          Patterns::Double(0),
                           "Horizontal distance from the trench of the surface "
                           "point above the patch's down-dip end [m]");
-        prm.declare_entry("Patch length", "0.20", Patterns::Double(0),
+        prm.declare_entry("Patch length",
+                          "0.20",
+                          Patterns::Double(0),
                           "Length of the seismogenic patch along the base in "
                           "2D [m]");
-        prm.declare_entry("Patch length at z = 0", "0.15", Patterns::Double(0),
+        prm.declare_entry("Patch length at z = 0",
+                          "0.15",
+                          Patterns::Double(0),
                           "3D: along-base length of the trapezoidal patch at "
                           "the lateral side z = 0 [m]");
-        prm.declare_entry("Patch length at z = width", "0.25",
+        prm.declare_entry("Patch length at z = width",
+                          "0.25",
                           Patterns::Double(0),
                           "3D: along-base length of the trapezoidal patch at "
                           "the lateral side z = Width [m]");
-        prm.declare_entry("Lower region thickness", "0.06",
+        prm.declare_entry("Lower region thickness",
+                          "0.06",
                           Patterns::Double(0),
                           "The viscous lower region is the part of the wedge "
                           "less than this height above the backstop's lower "
                           "corner B [m]");
-        prm.declare_entry("Density upper", "900", Patterns::Double(1e-12),
+        prm.declare_entry("Density upper",
+                          "900",
+                          Patterns::Double(1e-12),
                           "Mass density of the upper region [kg/m^3]");
-        prm.declare_entry("Density lower", "1000", Patterns::Double(1e-12),
+        prm.declare_entry("Density lower",
+                          "1000",
+                          Patterns::Double(1e-12),
                           "Mass density of the lower region [kg/m^3]");
-        prm.declare_entry("Shear viscosity upper", "1e3", Patterns::Double(0),
+        prm.declare_entry("Shear viscosity upper",
+                          "1e3",
+                          Patterns::Double(0),
                           "Shear viscosity of the upper region [Pa s]");
-        prm.declare_entry("Bulk viscosity upper", "1e3", Patterns::Double(0),
+        prm.declare_entry("Bulk viscosity upper",
+                          "1e3",
+                          Patterns::Double(0),
                           "Bulk viscosity of the upper region [Pa s]; the "
                           "paper gives one viscosity, used for both");
-        prm.declare_entry("Shear viscosity lower", "1e4", Patterns::Double(0),
+        prm.declare_entry("Shear viscosity lower",
+                          "1e4",
+                          Patterns::Double(0),
                           "Shear viscosity of the lower region [Pa s]");
-        prm.declare_entry("Bulk viscosity lower", "1e4", Patterns::Double(0),
+        prm.declare_entry("Bulk viscosity lower",
+                          "1e4",
+                          Patterns::Double(0),
                           "Bulk viscosity of the lower region [Pa s]");
-        prm.declare_entry("Bulk modulus", "5e4", Patterns::Double(1e-12),
+        prm.declare_entry("Bulk modulus",
+                          "5e4",
+                          Patterns::Double(1e-12),
                           "Bulk modulus K [Pa]");
-        prm.declare_entry("Poisson ratio", "0.3", Patterns::Double(-0.999, 0.499),
+        prm.declare_entry("Poisson ratio",
+                          "0.3",
+                          Patterns::Double(-0.999, 0.499),
                           "Poisson ratio nu, in (-1, 0.5)");
-        prm.declare_entry("Gravity", "9.81", Patterns::Double(0),
+        prm.declare_entry("Gravity",
+                          "9.81",
+                          Patterns::Double(0),
                           "Gravitational acceleration [m/s^2]");
-        prm.declare_entry("Patch a", "0.002", Patterns::Double(1e-12),
+        prm.declare_entry("Patch a",
+                          "0.002",
+                          Patterns::Double(1e-12),
                           "Direct-effect parameter a on the patch [-]");
-        prm.declare_entry("Patch b - a", "0.015", Patterns::Double(),
+        prm.declare_entry("Patch b - a",
+                          "0.015",
+                          Patterns::Double(),
                           "b - a on the patch [-] (> 0: rate weakening)");
-        prm.declare_entry("Outside a", "0.020", Patterns::Double(1e-12),
+        prm.declare_entry("Outside a",
+                          "0.020",
+                          Patterns::Double(1e-12),
                           "Direct-effect parameter a off the patch [-]");
-        prm.declare_entry("Outside b - a", "-0.015", Patterns::Double(),
+        prm.declare_entry("Outside b - a",
+                          "-0.015",
+                          Patterns::Double(),
                           "b - a off the patch [-] (< 0: rate strengthening)");
-        prm.declare_entry("Reference friction coefficient", "0.7",
-                          Patterns::Double(0), "mu* [-]");
-        prm.declare_entry("Reference slip rate", "50e-6",
-                          Patterns::Double(1e-300), "V* [m/s]");
-        prm.declare_entry("Characteristic slip distance", "22.5e-6",
-                          Patterns::Double(1e-300), "L [m]");
+        prm.declare_entry("Reference friction coefficient",
+                          "0.7",
+                          Patterns::Double(0),
+                          "mu* [-]");
+        prm.declare_entry("Reference slip rate",
+                          "50e-6",
+                          Patterns::Double(1e-300),
+                          "V* [m/s]");
+        prm.declare_entry("Characteristic slip distance",
+                          "22.5e-6",
+                          Patterns::Double(1e-300),
+                          "L [m]");
         prm.declare_entry("Cohesion", "10", Patterns::Double(0), "C [Pa]");
-        prm.declare_entry("Convergence rate", "50e-6",
+        prm.declare_entry("Convergence rate",
+                          "50e-6",
                           Patterns::Double(1e-300),
                           "Plate convergence rate v0 [m/s]");
-        prm.declare_entry("Ramp time", "100", Patterns::Double(0),
+        prm.declare_entry("Ramp time",
+                          "100",
+                          Patterns::Double(0),
                           "t0 [s]: the backstop speed rises as "
                           "v0 (1 - cos(pi t/t0))/2 until t0");
-        prm.declare_entry("Observation points", "0.15, 0.30, 0.45",
+        prm.declare_entry("Observation points",
+                          "0.15, 0.30, 0.45",
                           Patterns::List(Patterns::Double(0)),
                           "Horizontal distances from the trench of the surface "
                           "points whose vertical displacement is recorded [m]");
@@ -95,34 +142,34 @@ namespace rsfcycle
     Wedge<dim>::Wedge(ParameterHandler &prm)
     {
       prm.enter_subsection("Wedge");
-      length             = prm.get_double("Length");
-      depth              = prm.get_double("Depth");
-      width              = prm.get_double("Width");
-      patch_downdip_x    = prm.get_double("Patch down-dip end");
-      patch_length       = prm.get_double("Patch length");
-      patch_length_0     = prm.get_double("Patch length at z = 0");
-      patch_length_1     = prm.get_double("Patch length at z = width");
-      lower_thickness    = prm.get_double("Lower region thickness");
-      upper.density      = prm.get_double("Density upper");
-      lower.density      = prm.get_double("Density lower");
+      length                = prm.get_double("Length");
+      depth                 = prm.get_double("Depth");
+      width                 = prm.get_double("Width");
+      patch_downdip_x       = prm.get_double("Patch down-dip end");
+      patch_length          = prm.get_double("Patch length");
+      patch_length_0        = prm.get_double("Patch length at z = 0");
+      patch_length_1        = prm.get_double("Patch length at z = width");
+      lower_thickness       = prm.get_double("Lower region thickness");
+      upper.density         = prm.get_double("Density upper");
+      lower.density         = prm.get_double("Density lower");
       upper.shear_viscosity = prm.get_double("Shear viscosity upper");
       upper.bulk_viscosity  = prm.get_double("Bulk viscosity upper");
       lower.shear_viscosity = prm.get_double("Shear viscosity lower");
       lower.bulk_viscosity  = prm.get_double("Bulk viscosity lower");
-      bulk_modulus       = prm.get_double("Bulk modulus");
-      poisson_ratio      = prm.get_double("Poisson ratio");
-      g                  = prm.get_double("Gravity");
-      a_patch            = prm.get_double("Patch a");
-      b_minus_a_patch    = prm.get_double("Patch b - a");
-      a_outside          = prm.get_double("Outside a");
-      b_minus_a_outside  = prm.get_double("Outside b - a");
-      mu_star            = prm.get_double("Reference friction coefficient");
-      v_star             = prm.get_double("Reference slip rate");
-      L                  = prm.get_double("Characteristic slip distance");
-      cohesion_value     = prm.get_double("Cohesion");
-      v0                 = prm.get_double("Convergence rate");
-      t0                 = prm.get_double("Ramp time");
-      observation_x      = Utilities::string_to_double(
+      bulk_modulus          = prm.get_double("Bulk modulus");
+      poisson_ratio         = prm.get_double("Poisson ratio");
+      g                     = prm.get_double("Gravity");
+      a_patch               = prm.get_double("Patch a");
+      b_minus_a_patch       = prm.get_double("Patch b - a");
+      a_outside             = prm.get_double("Outside a");
+      b_minus_a_outside     = prm.get_double("Outside b - a");
+      mu_star               = prm.get_double("Reference friction coefficient");
+      v_star                = prm.get_double("Reference slip rate");
+      L                     = prm.get_double("Characteristic slip distance");
+      cohesion_value        = prm.get_double("Cohesion");
+      v0                    = prm.get_double("Convergence rate");
+      t0                    = prm.get_double("Ramp time");
+      observation_x         = Utilities::string_to_double(
         Utilities::split_string_list(prm.get("Observation points")));
       prm.leave_subsection();
 
@@ -140,7 +187,8 @@ namespace rsfcycle
       if (s_down - patch_length < 0 || s_down - patch_length + longest > hyp)
         throw std::invalid_argument(
           "Wedge/Patch length: the patch must lie on the base (along-base "
-          "extent [0, " + std::to_string(hyp) + "] m)");
+          "extent [0, " +
+          std::to_string(hyp) + "] m)");
       for (const double x : observation_x)
         if (x > length)
           throw std::invalid_argument(
@@ -192,10 +240,11 @@ namespace rsfcycle
     void
     Wedge<dim>::create_coarse_mesh(Triangulation<dim> &tria) const
     {
-      const double hyp = std::hypot(length, depth);
-      const std::vector<Point<2>> corners = {
-        Point<2>(0, 0), Point<2>(hyp, 0), Point<2>(length * cos_phi,
-                                                   length * sin_phi)};
+      const double                hyp     = std::hypot(length, depth);
+      const std::vector<Point<2>> corners = {Point<2>(0, 0),
+                                             Point<2>(hyp, 0),
+                                             Point<2>(length * cos_phi,
+                                                      length * sin_phi)};
       if constexpr (dim == 2)
         GridGenerator::simplex(tria, corners);
       else
@@ -228,9 +277,9 @@ namespace rsfcycle
     double
     Wedge<dim>::distance_to_patch(const Point<dim> &p) const
     {
-      const double z = (dim == 3) ? p[2] : 0.;
+      const double z            = (dim == 3) ? p[2] : 0.;
       const auto [s_up, s_down] = patch_extent(z);
-      const double dx = std::max({0., s_up - p[0], p[0] - s_down});
+      const double dx           = std::max({0., s_up - p[0], p[0] - s_down});
       const double dz = (dim == 3) ? std::max({0., -z, z - width}) : 0.;
       return std::sqrt(dx * dx + p[1] * p[1] + dz * dz);
     }
@@ -302,8 +351,8 @@ namespace rsfcycle
       const double tol          = 1e-10;
       const bool   on_patch     = p[0] >= s_up - tol && p[0] <= s_down + tol;
       friction::Parameters params;
-      params.a       = on_patch ? a_patch : a_outside;
-      params.b       = params.a + (on_patch ? b_minus_a_patch : b_minus_a_outside);
+      params.a = on_patch ? a_patch : a_outside;
+      params.b = params.a + (on_patch ? b_minus_a_patch : b_minus_a_outside);
       params.mu_star = mu_star;
       params.v_star  = v_star;
       params.L       = L;

@@ -1,6 +1,5 @@
-#include <rsfcycle/solvers/sparse_cholesky.h>
-
 #include <cholmod.h>
+#include <rsfcycle/solvers/sparse_cholesky.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -59,13 +58,18 @@ namespace rsfcycle
         for (auto it = A.begin(j); it != A.end(j); ++it)
           if (it->column() <= j)
             ++nnz;
-      cholmod_sparse *S = cholmod_allocate_sparse(
-        n, n, nnz, /*sorted*/ 0, /*packed*/ 1, /*stype*/ 1, CHOLMOD_REAL,
-        &data->common);
-      auto *p = static_cast<int *>(S->p);
-      auto *i = static_cast<int *>(S->i);
-      auto *x = static_cast<double *>(S->x);
-      std::size_t k = 0;
+      cholmod_sparse *S = cholmod_allocate_sparse(n,
+                                                  n,
+                                                  nnz,
+                                                  /*sorted*/ 0,
+                                                  /*packed*/ 1,
+                                                  /*stype*/ 1,
+                                                  CHOLMOD_REAL,
+                                                  &data->common);
+      auto           *p = static_cast<int *>(S->p);
+      auto           *i = static_cast<int *>(S->i);
+      auto           *x = static_cast<double *>(S->x);
+      std::size_t     k = 0;
       for (std::size_t j = 0; j < n; ++j)
         {
           p[j] = k;
@@ -94,7 +98,7 @@ namespace rsfcycle
 
     void
     SparseCholesky::solve(const dealii::Vector<double> &b,
-                          dealii::Vector<double> &      x) const
+                          dealii::Vector<double>       &x) const
     {
       cholmod_dense *X = data->solve(b.begin(), 1);
       x.reinit(data->n, true);
@@ -106,7 +110,7 @@ namespace rsfcycle
 
     void
     SparseCholesky::solve(const dealii::FullMatrix<double> &B,
-                          dealii::FullMatrix<double> &      X) const
+                          dealii::FullMatrix<double>       &X) const
     {
       const std::size_t   m = B.n();
       std::vector<double> columns(data->n * m);
@@ -114,7 +118,7 @@ namespace rsfcycle
         for (std::size_t c = 0; c < m; ++c)
           columns[c * data->n + r] = B(r, c);
       cholmod_dense *result = data->solve(columns.data(), m);
-      const auto *   values = static_cast<const double *>(result->x);
+      const auto    *values = static_cast<const double *>(result->x);
       X.reinit(data->n, m);
       for (std::size_t r = 0; r < data->n; ++r)
         for (std::size_t c = 0; c < m; ++c)

@@ -1,15 +1,13 @@
+#include <cmath>
+#include <cstdlib>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparsity_pattern.h>
-
+#include <iostream>
 #include <rsfcycle/solvers/sparse_cholesky.h>
 #include <rsfcycle/solvers/tnnmg.h>
-
-#include <cmath>
-#include <cstdlib>
-#include <iostream>
 
 namespace rsfcycle
 {
@@ -26,14 +24,14 @@ namespace rsfcycle
        */
       void
       friction_gradient_and_hessian(const friction::NodePotential &phi,
-                                    const std::array<double, 2> &  y,
+                                    const std::array<double, 2>   &y,
                                     const unsigned int             d,
-                                    std::array<double, 2> &        grad,
-                                    std::array<double, 4> &        hess)
+                                    std::array<double, 2>         &grad,
+                                    std::array<double, 4>         &hess)
       {
         const double s = (d == 1) ? std::abs(y[0]) : std::hypot(y[0], y[1]);
-        grad = {{0., 0.}};
-        hess = {{0., 0., 0., 0.}};
+        grad           = {{0., 0.}};
+        hess           = {{0., 0., 0., 0.}};
         if (!(s > 0))
           return;
         const double g  = phi.derivative(s);
@@ -47,8 +45,8 @@ namespace rsfcycle
             const double e[2] = {y[0] / s, y[1] / s};
             for (unsigned int k = 0; k < 2; ++k)
               for (unsigned int l = 0; l < 2; ++l)
-                hess[2 * k + l] = gp * e[k] * e[l] +
-                                  g / s * ((k == l ? 1. : 0.) - e[k] * e[l]);
+                hess[2 * k + l] =
+                  gp * e[k] * e[l] + g / s * ((k == l ? 1. : 0.) - e[k] * e[l]);
           }
       }
     } // namespace
@@ -64,9 +62,9 @@ namespace rsfcycle
     TNNMG::gauss_seidel_sweep(const SpatialProblem &problem, Vector<double> &v)
     {
       const SparseMatrix<double> &A       = *problem.A;
-      const Vector<double> &      r       = *problem.rhs;
-      const std::vector<bool> &   fixed   = *problem.fixed;
-      const ContactSet &          contact = *problem.contact;
+      const Vector<double>       &r       = *problem.rhs;
+      const std::vector<bool>    &fixed   = *problem.fixed;
+      const ContactSet           &contact = *problem.contact;
 
       for (global_dof_index i = 0; i < v.size(); ++i)
         {
@@ -101,7 +99,7 @@ namespace rsfcycle
               rho[k]                     = r[row];
               for (auto it = A.begin(row); it != A.end(row); ++it)
                 {
-                  const global_dof_index col = it->column();
+                  const global_dof_index col      = it->column();
                   bool                   in_block = false;
                   for (unsigned int l = 0; l < d; ++l)
                     if (col == node.dofs[l])
@@ -114,7 +112,8 @@ namespace rsfcycle
                 }
             }
 
-          const friction::NodePotential &phi = (*problem.potentials)[node_index];
+          const friction::NodePotential &phi =
+            (*problem.potentials)[node_index];
           if (d == 1)
             {
               const auto sol =
@@ -136,17 +135,18 @@ namespace rsfcycle
                        const Vector<double> &v,
                        const Vector<double> &c) const
     {
-      // J(v + t c)' = c^T(A v - r) + t c^T A c + sum_i phi_i'(|y_i|) y_i.c_i/|y_i|
-      const double c_residual = -(c * residual); // residual = r - A v
-      const double cAc        = problem.A->matrix_norm_square(c);
-      const ContactSet &contact = *problem.contact;
+      // J(v + t c)' = c^T(A v - r) + t c^T A c + sum_i phi_i'(|y_i|)
+      // y_i.c_i/|y_i|
+      const double      c_residual = -(c * residual); // residual = r - A v
+      const double      cAc        = problem.A->matrix_norm_square(c);
+      const ContactSet &contact    = *problem.contact;
 
       const auto derivative = [&](const double t) {
         double value = c_residual + t * cAc;
         for (unsigned int n = 0; n < contact.nodes.size(); ++n)
           {
             const ContactNode &node = contact.nodes[n];
-            double y[2] = {0, 0}, cn[2] = {0, 0};
+            double             y[2] = {0, 0}, cn[2] = {0, 0};
             for (unsigned int k = 0; k < node.n_dofs; ++k)
               {
                 cn[k] = c[node.dofs[k]];
@@ -155,11 +155,11 @@ namespace rsfcycle
             const double c_norm = std::hypot(cn[0], cn[1]);
             if (c_norm == 0)
               continue;
-            const double s = std::hypot(y[0], y[1]);
+            const double                   s   = std::hypot(y[0], y[1]);
             const friction::NodePotential &phi = (*problem.potentials)[n];
             if (s > 0)
-              value += phi.derivative(s) *
-                       ((y[0] / s) * cn[0] + (y[1] / s) * cn[1]);
+              value +=
+                phi.derivative(s) * ((y[0] / s) * cn[0] + (y[1] / s) * cn[1]);
             else
               value += phi.cohesion_force * c_norm; // right derivative
           }
@@ -190,9 +190,9 @@ namespace rsfcycle
     TNNMG::solve(const SpatialProblem &problem, Vector<double> &v)
     {
       const SparseMatrix<double> &A       = *problem.A;
-      const std::vector<bool> &   fixed   = *problem.fixed;
-      const ContactSet &          contact = *problem.contact;
-      const auto &                phis    = *problem.potentials;
+      const std::vector<bool>    &fixed   = *problem.fixed;
+      const ContactSet           &contact = *problem.contact;
+      const auto                 &phis    = *problem.potentials;
       const global_dof_index      n       = v.size();
 
       residual.reinit(n);
@@ -220,7 +220,7 @@ namespace rsfcycle
           newton_rhs = residual;
           for (unsigned int k = 0; k < contact.nodes.size(); ++k)
             {
-              const ContactNode &   node = contact.nodes[k];
+              const ContactNode    &node = contact.nodes[k];
               std::array<double, 2> y{}, grad{};
               for (unsigned int l = 0; l < node.n_dofs; ++l)
                 y[l] = v[node.dofs[l]];
@@ -272,8 +272,8 @@ namespace rsfcycle
 
           increment = v;
           increment -= v_old;
-          const double change = std::sqrt(A.matrix_norm_square(increment));
-          const double size   = std::sqrt(A.matrix_norm_square(v));
+          const double change   = std::sqrt(A.matrix_norm_square(increment));
+          const double size     = std::sqrt(A.matrix_norm_square(v));
           stats.relative_change = (size > 0) ? change / size : change;
           if (!std::isfinite(stats.relative_change))
             {
@@ -292,16 +292,16 @@ namespace rsfcycle
 
     struct DirectCorrection::Factorization
     {
-      double                                  key = 0;
-      dealii::SparsityPattern                 pattern;
-      dealii::SparseMatrix<double>            A_II;
-      SparseCholesky                          lu;
-      dealii::FullMatrix<double>              schur; // n_c x n_c
-      dealii::FullMatrix<double>              Z;     // A_II^{-1} A_Ic
+      double                       key = 0;
+      dealii::SparsityPattern      pattern;
+      dealii::SparseMatrix<double> A_II;
+      SparseCholesky               lu;
+      dealii::FullMatrix<double>   schur; // n_c x n_c
+      dealii::FullMatrix<double>   Z;     // A_II^{-1} A_Ic
     };
 
 
-    DirectCorrection::DirectCorrection() = default;
+    DirectCorrection::DirectCorrection()  = default;
     DirectCorrection::~DirectCorrection() = default;
 
 
@@ -313,7 +313,7 @@ namespace rsfcycle
           return *f;
 
       const SparseMatrix<double> &A       = *system.A;
-      const ContactSet &          contact = *system.contact;
+      const ContactSet           &contact = *system.contact;
       const global_dof_index      n       = A.m();
       if (interior_index.size() != n)
         {
@@ -332,13 +332,16 @@ namespace rsfcycle
               }
         }
 
-      static int n_setups = 0; if (std::getenv("RSF_DEBUG")) std::cerr << "setup " << ++n_setups << " key " << system.matrix_key << "\n";
+      static int n_setups = 0;
+      if (std::getenv("RSF_DEBUG"))
+        std::cerr << "setup " << ++n_setups << " key " << system.matrix_key
+                  << "\n";
       if (cache.size() >= 8)
         cache.erase(cache.begin());
       auto f = std::make_unique<Factorization>();
       f->key = system.matrix_key;
 
-      const unsigned int            n_I = interior.size();
+      const unsigned int             n_I = interior.size();
       dealii::DynamicSparsityPattern dsp(n_I, n_I);
       for (unsigned int k = 0; k < n_I; ++k)
         for (auto it = A.begin(interior[k]); it != A.end(interior[k]); ++it)
@@ -385,14 +388,14 @@ namespace rsfcycle
 
     unsigned int
     DirectCorrection::solve(const TruncatedNewtonSystem &system,
-                            const Vector<double> &       rhs,
-                            Vector<double> &             c)
+                            const Vector<double>        &rhs,
+                            Vector<double>              &c)
     {
-      const Factorization &      f         = factorization(system);
-      const SparseMatrix<double> &A        = *system.A;
-      const ContactSet &         contact   = *system.contact;
-      const std::vector<bool> &  truncated = *system.truncated;
-      const unsigned int         n_I       = interior.size();
+      const Factorization        &f         = factorization(system);
+      const SparseMatrix<double> &A         = *system.A;
+      const ContactSet           &contact   = *system.contact;
+      const std::vector<bool>    &truncated = *system.truncated;
+      const unsigned int          n_I       = interior.size();
 
       // Active contact dofs and their position in contact_dofs.
       std::vector<unsigned int> active;

@@ -5,16 +5,14 @@
 // normal forces of the gravity equilibrium, and selected rows of
 // time-series.csv with slip rates as log10(V/v0) and uplift in micrometres,
 // so that numdiff's absolute tolerance sees a wrong sign or factor.
-#include <deal.II/base/parameter_handler.h>
-
-#include <rsfcycle/parameters.h>
-#include <rsfcycle/problem_base.h>
-#include <rsfcycle/scenes/scene.h>
-
 #include <cmath>
+#include <deal.II/base/parameter_handler.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/problem_base.h>
+#include <rsfcycle/scenes/scene.h>
 #include <sstream>
 
 namespace
@@ -41,12 +39,12 @@ namespace
   template <int dim>
   void
   run(const rsfcycle::Parameters &parameters,
-      dealii::ParameterHandler &  prm,
-      std::ostream &              out)
+      dealii::ParameterHandler   &prm,
+      std::ostream               &out)
   {
     const auto scene =
       rsfcycle::scenes::make_scene<dim>(parameters.run.scene, prm);
-    std::ostringstream          log;
+    std::ostringstream         log;
     rsfcycle::ProblemBase<dim> problem(parameters, *scene, log);
     problem.run(prm);
     std::cout << log.str();

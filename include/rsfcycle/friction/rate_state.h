@@ -84,8 +84,11 @@ namespace rsfcycle
      *    V = 0).
      */
     double
-    update_state(StateLaw law, const Parameters &p, double alpha, double V,
-                 double tau);
+    update_state(StateLaw          law,
+                 const Parameters &p,
+                 double            alpha,
+                 double            V,
+                 double            tau);
 
     /**
      * The friction potential of one contact node with lumped quadrature,
@@ -112,8 +115,7 @@ namespace rsfcycle
       double
       second_derivative(const double s) const
       {
-        return normal_force *
-               friction_coefficient_derivative(params, alpha, s);
+        return normal_force * friction_coefficient_derivative(params, alpha, s);
       }
     };
 
@@ -142,8 +144,8 @@ namespace rsfcycle
     template <int d>
     LocalSolution<d>
     solve_local_problem(const std::array<double, d * d> &A,
-                        const std::array<double, d> &    rho,
-                        const NodePotential &            phi);
+                        const std::array<double, d>     &rho,
+                        const NodePotential             &phi);
   } // namespace friction
 } // namespace rsfcycle
 

@@ -4,12 +4,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/grid/tria.h>
-
-#include <rsfcycle/friction/rate_state.h>
-
 #include <memory>
+#include <rsfcycle/friction/rate_state.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,7 +20,7 @@ namespace rsfcycle
     /** Bulk material of one region (material id). */
     struct Material
     {
-      double density        = 900;  // [kg/m^3]
+      double density         = 900; // [kg/m^3]
       double shear_viscosity = 1e3; // [Pa s]
       double bulk_viscosity  = 1e3; // [Pa s]
     };

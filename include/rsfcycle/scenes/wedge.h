@@ -61,9 +61,9 @@ namespace rsfcycle
       patch_extent(double z) const;
 
     private:
-      double length, depth, width;
-      double patch_downdip_x, patch_length, patch_length_0, patch_length_1;
-      double lower_thickness;
+      double   length, depth, width;
+      double   patch_downdip_x, patch_length, patch_length_0, patch_length_1;
+      double   lower_thickness;
       Material upper, lower;
       double   bulk_modulus, poisson_ratio, g;
       double   a_patch, b_minus_a_patch, a_outside, b_minus_a_outside;

@@ -4,7 +4,6 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-
 #include <memory>
 
 namespace rsfcycle
@@ -38,7 +37,7 @@ namespace rsfcycle
       /** X = A^{-1} B for all columns of B (n x m, row-major in deal.II). */
       void
       solve(const dealii::FullMatrix<double> &B,
-            dealii::FullMatrix<double> &      X) const;
+            dealii::FullMatrix<double>       &X) const;
 
     private:
       struct Data;

@@ -1,15 +1,12 @@
 #ifndef rsfcycle_solvers_spatial_problem_h
 #define rsfcycle_solvers_spatial_problem_h
 
-#include <deal.II/base/types.h>
-
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/vector.h>
-
-#include <rsfcycle/friction/rate_state.h>
-
 #include <array>
 #include <cmath>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <rsfcycle/friction/rate_state.h>
 #include <vector>
 
 namespace rsfcycle
@@ -68,10 +65,10 @@ namespace rsfcycle
      */
     struct SpatialProblem
     {
-      const dealii::SparseMatrix<double> *       A        = nullptr;
-      const dealii::Vector<double> *             rhs      = nullptr;
-      const std::vector<bool> *                  fixed    = nullptr;
-      const ContactSet *                         contact  = nullptr;
+      const dealii::SparseMatrix<double>         *A          = nullptr;
+      const dealii::Vector<double>               *rhs        = nullptr;
+      const std::vector<bool>                    *fixed      = nullptr;
+      const ContactSet                           *contact    = nullptr;
       const std::vector<friction::NodePotential> *potentials = nullptr;
       /** Passed on to TruncatedNewtonSystem::matrix_key. */
       double matrix_key = 0;
@@ -85,10 +82,10 @@ namespace rsfcycle
      */
     struct TruncatedNewtonSystem
     {
-      const dealii::SparseMatrix<double> *    A           = nullptr;
-      const ContactSet *                      contact     = nullptr;
+      const dealii::SparseMatrix<double>       *A             = nullptr;
+      const ContactSet                         *contact       = nullptr;
       const std::vector<std::array<double, 4>> *node_hessians = nullptr;
-      const std::vector<bool> *               truncated   = nullptr;
+      const std::vector<bool>                  *truncated     = nullptr;
       /**
        * Identifies the content of A (here: the step size tau), so that a
        * correction may cache what it derives from A. Entries of `truncated`
@@ -113,9 +110,9 @@ namespace rsfcycle
        * inner iterations (multigrid cycles; 1 for a direct solve).
        */
       virtual unsigned int
-      solve(const TruncatedNewtonSystem &system,
+      solve(const TruncatedNewtonSystem  &system,
             const dealii::Vector<double> &rhs,
-            dealii::Vector<double> &      correction) = 0;
+            dealii::Vector<double>       &correction) = 0;
     };
   } // namespace solvers
 } // namespace rsfcycle

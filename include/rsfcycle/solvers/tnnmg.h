@@ -1,9 +1,8 @@
 #ifndef rsfcycle_solvers_tnnmg_h
 #define rsfcycle_solvers_tnnmg_h
 
-#include <rsfcycle/solvers/spatial_problem.h>
-
 #include <memory>
+#include <rsfcycle/solvers/spatial_problem.h>
 #include <string>
 
 namespace rsfcycle
@@ -60,20 +59,20 @@ namespace rsfcycle
        * solve for contact nodes (MODEL.md §4.2 step 1).
        */
       static void
-      gauss_seidel_sweep(const SpatialProblem &problem,
+      gauss_seidel_sweep(const SpatialProblem   &problem,
                          dealii::Vector<double> &v);
 
     private:
       double
-      line_search(const SpatialProblem &        problem,
+      line_search(const SpatialProblem         &problem,
                   const dealii::Vector<double> &v,
                   const dealii::Vector<double> &c) const;
 
       LinearCorrection &correction;
       TNNMGControl      control;
 
-      dealii::Vector<double>             residual, increment, newton_rhs,
-        correction_vector, Ac, v_old;
+      dealii::Vector<double> residual, increment, newton_rhs, correction_vector,
+        Ac, v_old;
       std::vector<bool>                  truncated;
       std::vector<std::array<double, 4>> hessians;
     };
@@ -85,10 +84,10 @@ namespace rsfcycle
      * are eliminated once per step matrix: UMFPACK factorises A_II and the
      * dense Schur complement S = A_cc - A_cI A_II^{-1} A_Ic of all contact
      * dofs c is formed (with Z = A_II^{-1} A_Ic). Each TNNMG iteration then
-     * costs one sparse back-substitution and one dense solve with S_aa + H_aa on the active
-     * (non-truncated) contact dofs a. The factorisations of the last few
-     * step matrices are cached by TruncatedNewtonSystem::matrix_key. Meant
-     * for 2D and small 3D meshes (S is dense).
+     * costs one sparse back-substitution and one dense solve with S_aa + H_aa
+     * on the active (non-truncated) contact dofs a. The factorisations of the
+     * last few step matrices are cached by TruncatedNewtonSystem::matrix_key.
+     * Meant for 2D and small 3D meshes (S is dense).
      */
     class DirectCorrection : public LinearCorrection
     {
@@ -97,9 +96,9 @@ namespace rsfcycle
       ~DirectCorrection() override;
 
       unsigned int
-      solve(const TruncatedNewtonSystem &system,
+      solve(const TruncatedNewtonSystem  &system,
             const dealii::Vector<double> &rhs,
-            dealii::Vector<double> &      correction) override;
+            dealii::Vector<double>       &correction) override;
 
     private:
       struct Factorization;

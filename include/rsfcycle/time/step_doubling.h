@@ -84,8 +84,7 @@ namespace rsfcycle
           r1 = call(current, t, tau);
         bool coarsened = false;
         if (r1)
-          while (t + 2 * tau <= end_time * (1 + 1e-14) &&
-                 2 * tau <= max_step)
+          while (t + 2 * tau <= end_time * (1 + 1e-14) && 2 * tau <= max_step)
             {
               r2          = call(*r1, t + tau, tau);
               auto single = call(current, t, 2 * tau);

@@ -4,14 +4,46 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/scene.h>
+#include <streambuf>
 #include <string>
 
 namespace
 {
+  /** A stream buffer that writes to two others: the screen and log.txt. */
+  class TeeBuffer : public std::streambuf
+  {
+  public:
+    TeeBuffer(std::streambuf *first, std::streambuf *second)
+      : first(first)
+      , second(second)
+    {}
+
+  protected:
+    int
+    overflow(int c) override
+    {
+      if (c == EOF)
+        return !EOF;
+      const int r1 = first->sputc(c), r2 = second->sputc(c);
+      return (r1 == EOF || r2 == EOF) ? EOF : c;
+    }
+    int
+    sync() override
+    {
+      const int r1 = first->pubsync(), r2 = second->pubsync();
+      return (r1 == 0 && r2 == 0) ? 0 : -1;
+    }
+
+  private:
+    std::streambuf *first, *second;
+  };
+
   void
   print_help()
   {
@@ -36,7 +68,11 @@ namespace
   {
     const auto scene =
       rsfcycle::scenes::make_scene<dim>(parameters.run.scene, prm);
-    rsfcycle::ProblemBase<dim> problem(parameters, *scene, std::cout);
+    std::filesystem::create_directories(parameters.run.output_directory);
+    std::ofstream log_file(parameters.run.output_directory + "/log.txt");
+    TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
+    std::ostream  log(&tee);
+    rsfcycle::ProblemBase<dim> problem(parameters, *scene, log);
     problem.run(prm);
   }
 } // namespace

@@ -831,7 +831,8 @@ namespace rsfcycle
     log << "*** Time loop to t = " << end_time << " s" << std::endl;
     {
       TimerOutput::Scope scope(timer, "Time stepping");
-      while (t < end_time * (1 - 1e-14))
+      // t is a sum of step sizes: stop within round-off of the end time
+      while (end_time - t > 1e-10 * end_time)
         {
           try
             {

@@ -204,6 +204,7 @@ namespace rsfcycle
       hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
 
       TNNMGStatistics stats;
+      double          size = 0; // ||v||_A, once per solve
       for (unsigned int iteration = 0; iteration < control.max_iterations;
            ++iteration)
         {
@@ -373,14 +374,9 @@ namespace rsfcycle
           }
       f->lu.solve(A_Ic, f->Z);
       // S = A_cc - A_Ic^T Z
-      for (unsigned int i = 0; i < n_c; ++i)
-        for (unsigned int j = 0; j < n_c; ++j)
-          {
-            double sum = 0;
-            for (unsigned int k = 0; k < n_I; ++k)
-              sum += A_Ic(k, i) * f->Z(k, j);
-            f->schur(i, j) -= sum;
-          }
+      dealii::FullMatrix<double> product(n_c, n_c);
+      A_Ic.Tmmult(product, f->Z);
+      f->schur.add(-1., product);
       cache.push_back(std::move(f));
       return *cache.back();
     }

@@ -65,7 +65,7 @@ namespace rsfcycle
       advance(State &current, double &t, const double end_time)
       {
         spatial_problems = 0;
-        if (t + tau > end_time * (1 + 1e-14))
+        if (t + tau > end_time * (1 + 1e-12))
           {
             tau = end_time - t;
             forget();
@@ -84,7 +84,7 @@ namespace rsfcycle
           r1 = call(current, t, tau);
         bool coarsened = false;
         if (r1)
-          while (t + 2 * tau <= end_time * (1 + 1e-14) && 2 * tau <= max_step)
+          while (t + 2 * tau <= end_time * (1 + 1e-12) && 2 * tau <= max_step)
             {
               r2          = call(*r1, t + tau, tau);
               auto single = call(current, t, 2 * tau);

@@ -2,6 +2,7 @@
 // base (Pipping, Kornhuber, Rosenau, Oncken 2016). The thin driver: read the
 // parameter file, build the scene, run the generic solver.
 
+#include <cctype>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/scenes/spring_slider.h>
 #include <streambuf>
 #include <string>
 
@@ -48,7 +50,7 @@ namespace
   print_help()
   {
     std::cout
-      << "Usage: rsfcycle FILE.prm\n"
+      << "Usage: rsfcycle [--force] FILE.prm   (--force: overwrite the run folder)\n"
          "       rsfcycle --print-parameters   all parameters with their\n"
          "                                     documentation and defaults\n"
          "       rsfcycle --help\n\n"
@@ -62,18 +64,85 @@ namespace
          "prm/wedge-2d-paper.prm (the paper's resolution).\n";
   }
 
+  /**
+   * deal.II's exception texts span many lines (file, line, condition,
+   * "Additional information:"): keep only the information, on one line.
+   */
+  std::string
+  one_line(const std::string &what)
+  {
+    std::string       text   = what;
+    const std::string marker = "Additional information:";
+    if (const auto pos = text.find(marker); pos != std::string::npos)
+      text = text.substr(pos + marker.size());
+    if (const auto pos = text.find("Stacktrace:"); pos != std::string::npos)
+      text = text.substr(0, pos);
+    std::string result;
+    bool        space = false;
+    for (const char c : text)
+      if (std::isspace(static_cast<unsigned char>(c)))
+        space = !result.empty();
+      else
+        {
+          if (space)
+            result += ' ';
+          result += c;
+          space = false;
+        }
+    return result;
+  }
+
+  /**
+   * The run folder must not hold an earlier run unless the user asked to
+   * overwrite it; it must be writable. Checked before anything is written.
+   */
+  void
+  prepare_output_directory(const std::string &dir, const bool overwrite)
+  {
+    namespace fs = std::filesystem;
+    if (fs::exists(dir) && !fs::is_directory(dir))
+      throw std::invalid_argument("Output directory = " + dir +
+                                  ": exists and is not a folder");
+    if (fs::exists(dir) && !fs::is_empty(dir) && !overwrite)
+      throw std::invalid_argument(
+        "Output directory = " + dir +
+        ": holds an earlier run; choose another folder, or use --force "
+        "(or set Overwrite output = true) to overwrite it");
+    std::error_code error;
+    fs::create_directories(dir, error);
+    const std::string probe = dir + "/.rsfcycle-write-test";
+    if (error || !std::ofstream(probe))
+      throw std::invalid_argument("Output directory = " + dir +
+                                  ": cannot be created or written");
+    fs::remove(probe);
+  }
+
   template <int dim>
   void
   run(const rsfcycle::Parameters &parameters, dealii::ParameterHandler &prm)
   {
     const auto scene =
       rsfcycle::scenes::make_scene<dim>(parameters.run.scene, prm);
-    std::filesystem::create_directories(parameters.run.output_directory);
+    prepare_output_directory(parameters.run.output_directory,
+                             parameters.run.overwrite_output);
     std::ofstream log_file(parameters.run.output_directory + "/log.txt");
     TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
     std::ostream  log(&tee);
     rsfcycle::ProblemBase<dim> problem(parameters, *scene, log);
     problem.run(prm);
+  }
+
+  /** The spring-slider scene: no mesh, its own time loop (issue 4). */
+  void
+  run_spring_slider(const rsfcycle::Parameters &parameters,
+                    dealii::ParameterHandler   &prm)
+  {
+    rsfcycle::scenes::SpringSlider slider(parameters, prm);
+    std::filesystem::create_directories(parameters.run.output_directory);
+    std::ofstream log_file(parameters.run.output_directory + "/log.txt");
+    TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
+    std::ostream  log(&tee);
+    slider.run(prm, log);
   }
 } // namespace
 
@@ -86,34 +155,53 @@ main(int argc, char **argv)
       dealii::ParameterHandler prm;
       rsfcycle::Parameters::declare_parameters(prm);
 
-      if (argc != 2)
+      std::string file;
+      bool        force = false;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string argument = argv[i];
+          if (argument == "--help" || argument == "-h")
+            {
+              print_help();
+              return 0;
+            }
+          else if (argument == "--print-parameters")
+            {
+              prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+              return 0;
+            }
+          else if (argument == "--force")
+            force = true;
+          else if (argument.rfind("-", 0) == 0 || !file.empty())
+            throw std::invalid_argument("unknown argument " + argument +
+                                        " (see rsfcycle --help)");
+          else
+            file = argument;
+        }
+      if (file.empty())
         {
           print_help();
           return 1;
         }
-      const std::string argument = argv[1];
-      if (argument == "--help" || argument == "-h")
-        {
-          print_help();
-          return 0;
-        }
-      if (argument == "--print-parameters")
-        {
-          prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
-          return 0;
-        }
+      if (!std::filesystem::is_regular_file(file))
+        throw std::invalid_argument("parameter file " + file +
+                                    " does not exist");
 
-      prm.parse_input(argument);
+      prm.parse_input(file);
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);
-      if (parameters.run.dimension == 2)
+      if (force)
+        parameters.run.overwrite_output = true;
+      if (parameters.run.scene == "spring-slider")
+        run_spring_slider(parameters, prm);
+      else if (parameters.run.dimension == 2)
         run<2>(parameters, prm);
       else
         run<3>(parameters, prm);
     }
   catch (std::exception &exc)
     {
-      std::cerr << "rsfcycle: error: " << exc.what() << std::endl;
+      std::cerr << "rsfcycle: error: " << one_line(exc.what()) << std::endl;
       return 1;
     }
   catch (...)

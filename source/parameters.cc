@@ -1,5 +1,7 @@
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/scene.h>
+#include <sstream>
+#include <stdexcept>
 
 namespace rsfcycle
 {
@@ -26,6 +28,11 @@ namespace rsfcycle
                       "output",
                       Anything(),
                       "Run folder for parameters.prm, log, CSV and VTU files");
+    prm.declare_entry("Overwrite output",
+                      "false",
+                      Bool(),
+                      "Allow writing into a run folder that holds an earlier "
+                      "run (the command-line flag --force does the same)");
   }
 
   void
@@ -35,6 +42,9 @@ namespace rsfcycle
     scene            = prm.get("Scene");
     end_time         = prm.get_double("End time");
     output_directory = prm.get("Output directory");
+    overwrite_output = prm.get_bool("Overwrite output");
+    if (output_directory.empty())
+      throw std::invalid_argument("Output directory: must not be empty");
   }
 
 
@@ -208,6 +218,16 @@ namespace rsfcycle
                       Double(0),
                       "Wall-clock time between progress lines [s]");
     prm.declare_entry("Write VTU", "true", Bool(), "Write VTU/PVD snapshots");
+    prm.declare_entry("Transition time",
+                      "0",
+                      Double(0),
+                      "Events starting before this time belong to the initial "
+                      "transition and are left out of the summary [s]");
+    prm.declare_entry("Transition events",
+                      "2",
+                      Integer(0),
+                      "The first this many events are left out of the "
+                      "summary as well [-]");
     prm.leave_subsection();
   }
 
@@ -222,6 +242,8 @@ namespace rsfcycle
     event_threshold        = prm.get_double("Event threshold");
     progress_interval      = prm.get_double("Progress interval");
     write_vtu              = prm.get_bool("Write VTU");
+    transition_time        = prm.get_double("Transition time");
+    transition_events      = prm.get_integer("Transition events");
     prm.leave_subsection();
   }
 
@@ -245,5 +267,42 @@ namespace rsfcycle
     time_stepping.parse_parameters(prm);
     solver.parse_parameters(prm);
     output.parse_parameters(prm);
+    validate();
+  }
+
+
+  namespace
+  {
+    std::string
+    str(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+  void
+  Parameters::validate() const
+  {
+    const auto &ts = time_stepping;
+    if (!(ts.minimum_step <= ts.initial_step))
+      throw std::invalid_argument(
+        "Time stepping/Minimum step = " + str(ts.minimum_step) +
+        ": must not exceed Initial step = " + str(ts.initial_step));
+    if (!(ts.initial_step <= ts.maximum_step))
+      throw std::invalid_argument(
+        "Time stepping/Initial step = " + str(ts.initial_step) +
+        ": must not exceed Maximum step = " + str(ts.maximum_step));
+    if (mesh.global_refinements + mesh.local_refinements > 16)
+      throw std::invalid_argument(
+        "Mesh/Global refinements + Local refinements = " +
+        std::to_string(mesh.global_refinements + mesh.local_refinements) +
+        ": at most 16 levels are allowed");
+    if (!(output.event_output_interval <= output.output_interval))
+      throw std::invalid_argument(
+        "Output/Event output interval = " + str(output.event_output_interval) +
+        ": must not exceed Output interval = " + str(output.output_interval));
   }
 } // namespace rsfcycle

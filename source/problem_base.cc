@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <map>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/output/events.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/time/step_doubling.h>
 
@@ -821,9 +822,23 @@ namespace rsfcycle
     write_profile(t, slip_rates(state.v));
     double last_output = 0, last_profile = 0;
 
-    unsigned int  step = 0, n_events = 0, max_fixed_point = 0;
+    std::vector<double> along_base(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      along_base[k] = scene.along_base_coordinate(node_info[k].position);
+    output::EventDetector events(threshold, v0, along_base);
+    std::ofstream         catalogue(dir + "/events.csv");
+    catalogue << output::EventDetector::csv_header() << "\n";
+    const auto tangential_displacement = [&](const Vector<double> &u) {
+      std::vector<std::array<double, 2>> slip(n_nodes, {{0., 0.}});
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
+          slip[k][l] = u[contact.nodes[k].dofs[l]];
+      return slip;
+    };
+    events.update(0., slip_rates(state.v), tangential_displacement(state.u));
+
+    unsigned int  step = 0, max_fixed_point = 0;
     unsigned long total_problems = 0;
-    bool          in_event       = false;
     double        min_dt = 1e300, max_dt = 0;
     const auto    wall_start    = std::chrono::steady_clock::now();
     auto          last_progress = wall_start;
@@ -854,18 +869,25 @@ namespace rsfcycle
           const std::vector<double> rates = slip_rates(state.v);
           const auto   max_it   = std::max_element(rates.begin(), rates.end());
           const double max_rate = (max_it == rates.end()) ? 0. : *max_it;
-          if (!in_event && max_rate > threshold)
+          const bool   was_in_event = events.in_event();
+          if (events.update(t, rates, tangential_displacement(state.u)))
             {
-              in_event = true;
-              ++n_events;
-              log << "    event " << n_events << " starts at t = " << t
-                  << " s near s = "
-                  << scene.along_base_coordinate(
-                       node_info[max_it - rates.begin()].position)
-                  << " m along the base" << std::endl;
+              const auto &e = events.events().back();
+              output::EventDetector::write_csv_row(catalogue,
+                                                   events.events().size(),
+                                                   e);
+              catalogue.flush();
+              log << "    event " << events.events().size()
+                  << " ended at t = " << t << " s: peak slip rate "
+                  << e.peak_slip_rate / v0 << " v0, rupture width "
+                  << e.rupture_width() << " m, slip " << e.slip * 1e6 << " um"
+                  << std::endl;
             }
-          else if (in_event && max_rate < threshold)
-            in_event = false;
+          if (!was_in_event && events.in_event())
+            log << "    event " << events.n_started() << " starts at t = " << t
+                << " s near s = " << events.current().nucleation_position
+                << " m along the base" << std::endl;
+          const bool in_event = events.in_event();
 
           const std::vector<double> uplift = observed_uplift(state.u);
           series << t << "," << dt << ","
@@ -909,7 +931,7 @@ namespace rsfcycle
               log << "*** Step " << step << ": t = " << std::setprecision(6)
                   << t << " s / " << end_time << " s, dt = " << dt
                   << " s, max V = " << max_rate / v0
-                  << " v0, events = " << n_events << ", wall "
+                  << " v0, events = " << events.n_started() << ", wall "
                   << format_duration(elapsed) << ", ETA "
                   << format_duration(eta) << "\n"
                   << "    solver: " << state.statistics.fixed_point_iterations
@@ -926,9 +948,22 @@ namespace rsfcycle
       output_results(state, t);
 
     log << "Summary: " << step << " steps, " << total_problems
-        << " spatial problems, " << n_events << " events, step size " << min_dt
-        << " s to " << max_dt << " s, max fixed-point iterations "
+        << " spatial problems, " << events.n_started() << " events, step size "
+        << min_dt << " s to " << max_dt << " s, max fixed-point iterations "
         << max_fixed_point << std::endl;
+    {
+      std::ostringstream summary;
+      events.write_summary(summary,
+                           parameters.output.transition_time,
+                           parameters.output.transition_events);
+      log << summary.str();
+      std::ofstream(dir + "/summary.txt")
+        << "Steps: " << step << "\nSpatial problems: " << total_problems
+        << "\nStep size: " << min_dt << " s to " << max_dt
+        << " s\nMax fixed-point iterations per step: " << max_fixed_point
+        << "\n"
+        << summary.str();
+    }
     timer.print_summary();
   }
 

@@ -15,6 +15,7 @@ namespace rsfcycle
     std::string  scene            = "wedge";
     double       end_time         = 1000;
     std::string  output_directory = "output";
+    bool         overwrite_output = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -72,13 +73,15 @@ namespace rsfcycle
   /** Subsection "Output": snapshots, profiles, events, progress. */
   struct OutputParameters
   {
-    double output_interval        = 10;
-    double event_output_interval  = 0.1;
-    double profile_interval       = 1;
-    double event_profile_interval = 0.005;
-    double event_threshold        = 10;
-    double progress_interval      = 10;
-    bool   write_vtu              = true;
+    double       output_interval        = 10;
+    double       event_output_interval  = 0.1;
+    double       profile_interval       = 1;
+    double       event_profile_interval = 0.005;
+    double       event_threshold        = 10;
+    double       progress_interval      = 10;
+    bool         write_vtu              = true;
+    double       transition_time        = 0;
+    unsigned int transition_events      = 2;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -100,6 +103,14 @@ namespace rsfcycle
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Checks across entries that the patterns cannot express; throws
+     * std::invalid_argument with one line naming the entry, its value and
+     * what is allowed.
+     */
+    void
+    validate() const;
   };
 } // namespace rsfcycle
 

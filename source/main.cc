@@ -11,7 +11,6 @@
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/scene.h>
-#include <rsfcycle/scenes/spring_slider.h>
 #include <streambuf>
 #include <string>
 
@@ -51,6 +50,9 @@ namespace
   {
     std::cout
       << "Usage: rsfcycle [--force] FILE.prm   (--force: overwrite the run folder)\n"
+         "       rsfcycle --resume RUNDIR      continue an interrupted run from\n"
+         "                                     its checkpoint (Ctrl-C or SIGTERM\n"
+         "                                     write one and stop)\n"
          "       rsfcycle --print-parameters   all parameters with their\n"
          "                                     documentation and defaults\n"
          "       rsfcycle --help\n\n"
@@ -117,33 +119,26 @@ namespace
     fs::remove(probe);
   }
 
+  /** Returns false if the run was interrupted by a signal. */
   template <int dim>
-  void
-  run(const rsfcycle::Parameters &parameters, dealii::ParameterHandler &prm)
+  bool
+  run(const rsfcycle::Parameters &parameters,
+      dealii::ParameterHandler   &prm,
+      const bool                  resume)
   {
     const auto scene =
       rsfcycle::scenes::make_scene<dim>(parameters.run.scene, prm);
-    prepare_output_directory(parameters.run.output_directory,
-                             parameters.run.overwrite_output);
-    std::ofstream log_file(parameters.run.output_directory + "/log.txt");
+    if (!resume)
+      prepare_output_directory(parameters.run.output_directory,
+                               parameters.run.overwrite_output);
+    std::ofstream log_file(parameters.run.output_directory + "/log.txt",
+                           resume ? std::ios::app : std::ios::out);
     TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
     std::ostream  log(&tee);
     rsfcycle::ProblemBase<dim> problem(parameters, *scene, log);
-    problem.run(prm);
+    return problem.run(prm, resume);
   }
 
-  /** The spring-slider scene: no mesh, its own time loop (issue 4). */
-  void
-  run_spring_slider(const rsfcycle::Parameters &parameters,
-                    dealii::ParameterHandler   &prm)
-  {
-    rsfcycle::scenes::SpringSlider slider(parameters, prm);
-    std::filesystem::create_directories(parameters.run.output_directory);
-    std::ofstream log_file(parameters.run.output_directory + "/log.txt");
-    TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
-    std::ostream  log(&tee);
-    slider.run(prm, log);
-  }
 } // namespace
 
 
@@ -155,7 +150,7 @@ main(int argc, char **argv)
       dealii::ParameterHandler prm;
       rsfcycle::Parameters::declare_parameters(prm);
 
-      std::string file;
+      std::string file, resume_dir;
       bool        force = false;
       for (int i = 1; i < argc; ++i)
         {
@@ -172,6 +167,11 @@ main(int argc, char **argv)
             }
           else if (argument == "--force")
             force = true;
+          else if (argument == "--resume" && i + 1 < argc && file.empty())
+            {
+              resume_dir = argv[++i];
+              file       = resume_dir + "/parameters.prm";
+            }
           else if (argument.rfind("-", 0) == 0 || !file.empty())
             throw std::invalid_argument("unknown argument " + argument +
                                         " (see rsfcycle --help)");
@@ -192,12 +192,14 @@ main(int argc, char **argv)
       parameters.parse_parameters(prm);
       if (force)
         parameters.run.overwrite_output = true;
-      if (parameters.run.scene == "spring-slider")
-        run_spring_slider(parameters, prm);
-      else if (parameters.run.dimension == 2)
-        run<2>(parameters, prm);
-      else
-        run<3>(parameters, prm);
+      const bool resume = !resume_dir.empty();
+      if (resume)
+        parameters.run.output_directory = resume_dir;
+      const bool finished = (parameters.run.dimension == 2) ?
+                              run<2>(parameters, prm, resume) :
+                              run<3>(parameters, prm, resume);
+      if (!finished)
+        return 130;
     }
   catch (std::exception &exc)
     {

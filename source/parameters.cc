@@ -228,6 +228,18 @@ namespace rsfcycle
                       Integer(0),
                       "The first this many events are left out of the "
                       "summary as well [-]");
+    prm.declare_entry("Checkpoint steps",
+                      "5000",
+                      Integer(0),
+                      "Write checkpoint.bin every this many accepted steps "
+                      "(0: never) [-]");
+    prm.declare_entry("Checkpoint minutes",
+                      "10",
+                      Double(0),
+                      "... and every this many minutes of wall-clock time "
+                      "(0: never) [min]; a checkpoint is also written at the "
+                      "end, on SIGINT/SIGTERM and when the step size "
+                      "underflows");
     prm.leave_subsection();
   }
 
@@ -244,6 +256,8 @@ namespace rsfcycle
     write_vtu              = prm.get_bool("Write VTU");
     transition_time        = prm.get_double("Transition time");
     transition_events      = prm.get_integer("Transition events");
+    checkpoint_steps       = prm.get_integer("Checkpoint steps");
+    checkpoint_minutes     = prm.get_double("Checkpoint minutes");
     prm.leave_subsection();
   }
 

@@ -1,5 +1,12 @@
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/array.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -720,16 +727,69 @@ namespace rsfcycle
   } // namespace
 
 
+  namespace
+  {
+    volatile std::sig_atomic_t stop_signal = 0;
+
+    extern "C" void
+    handle_stop_signal(int signal)
+    {
+      stop_signal = signal;
+    }
+  } // namespace
+
+
   template <int dim>
   void
-  ProblemBase<dim>::run(const ParameterHandler &prm)
+  ProblemBase<dim>::write_checkpoint(const std::string &dir,
+                                     const RunState    &run_state) const
+  {
+    // temporary file + rename: the previous checkpoint survives until the
+    // new one is complete
+    const std::string tmp = dir + "/checkpoint.tmp";
+    {
+      std::ofstream                   out(tmp, std::ios::binary);
+      boost::archive::binary_oarchive archive(out);
+      const types::global_dof_index   n_dofs = dof_handler.n_dofs();
+      archive << n_dofs << run_state << n_snapshots << pvd_records;
+      out.flush();
+      if (!out)
+        throw std::runtime_error("cannot write the checkpoint " + tmp);
+    }
+    std::filesystem::rename(tmp, dir + "/checkpoint.bin");
+  }
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::read_checkpoint(const std::string &dir, RunState &run_state)
+  {
+    std::ifstream in(dir + "/checkpoint.bin", std::ios::binary);
+    if (!in)
+      throw std::invalid_argument("--resume " + dir +
+                                  ": no checkpoint.bin in this folder");
+    boost::archive::binary_iarchive archive(in);
+    types::global_dof_index         n_dofs;
+    archive >> n_dofs;
+    if (n_dofs != dof_handler.n_dofs())
+      throw std::invalid_argument(
+        "--resume " + dir +
+        ": the checkpoint belongs to a different mesh (parameters changed?)");
+    archive >> run_state >> n_snapshots >> pvd_records;
+  }
+
+
+  template <int dim>
+  bool
+  ProblemBase<dim>::run(const ParameterHandler &prm, const bool resume)
   {
     const std::string dir = parameters.run.output_directory;
     std::filesystem::create_directories(dir + "/solution");
-    {
-      std::ofstream out(dir + "/parameters.prm");
-      prm.print_parameters(out, ParameterHandler::PRM);
-    }
+    if (!resume)
+      {
+        std::ofstream out(dir + "/parameters.prm");
+        prm.print_parameters(out, ParameterHandler::PRM);
+      }
 
     setup();
     const unsigned int n_nodes = contact.nodes.size();
@@ -764,37 +824,71 @@ namespace rsfcycle
              node_info[i].position[dim - 1] < node_info[j].position[dim - 1];
     });
 
-    std::ofstream series(dir + "/time-series.csv");
-    series << "time_s,step_size_s,fixed_point_iterations,tnnmg_iterations,"
-              "linear_iterations,spatial_problems,max_slip_rate_m_per_s";
-    const auto points = scene.observation_points();
-    for (const auto &p : points)
-      series << "," << p.first << "_m";
-    series << "\n" << std::setprecision(10);
-
-    std::ofstream profile(dir + "/base-profile.csv");
-    profile << "# slip rate [m/s] of the contact nodes; first row: position "
-               "along the base [m]"
-            << (dim == 3 ? " (then the z coordinate in the second row)" : "")
-            << "\n"
-            << "time_s";
-    for (const unsigned int k : order)
-      profile << "," << scene.along_base_coordinate(node_info[k].position);
-    profile << "\n";
-    if (dim == 3)
-      {
-        profile << "z_m";
-        for (const unsigned int k : order)
-          profile << "," << node_info[k].position[dim - 1];
-        profile << "\n";
-      }
-    profile << std::setprecision(8);
-
-    BodyState    state     = initial;
-    double       t         = 0;
     const double end_time  = parameters.run.end_time;
     const double v0        = scene.convergence_rate();
     const double threshold = parameters.output.event_threshold * v0;
+
+    std::vector<double> along_base(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      along_base[k] = scene.along_base_coordinate(node_info[k].position);
+
+    // Everything the time loop carries from step to step: what a checkpoint
+    // holds (with the output counters and the PVD record, members).
+    RunState run_state(output::EventDetector(threshold, v0, along_base));
+    run_state.state   = initial;
+    run_state.tau     = parameters.time_stepping.initial_step;
+    BodyState &state  = run_state.state;
+    double    &t      = run_state.t;
+    auto      &events = run_state.events;
+
+    std::ofstream series, profile, catalogue;
+    if (resume)
+      {
+        read_checkpoint(dir, run_state);
+        // drop what was written after the checkpoint, then append
+        std::filesystem::resize_file(dir + "/time-series.csv",
+                                     run_state.series_bytes);
+        std::filesystem::resize_file(dir + "/base-profile.csv",
+                                     run_state.profile_bytes);
+        std::filesystem::resize_file(dir + "/events.csv",
+                                     run_state.catalogue_bytes);
+        series.open(dir + "/time-series.csv", std::ios::app);
+        profile.open(dir + "/base-profile.csv", std::ios::app);
+        catalogue.open(dir + "/events.csv", std::ios::app);
+        log << "Resumed from the checkpoint at t = " << t << " s, step "
+            << run_state.step << std::endl;
+      }
+    else
+      {
+        series.open(dir + "/time-series.csv");
+        series << "time_s,step_size_s,fixed_point_iterations,tnnmg_iterations,"
+                  "linear_iterations,spatial_problems,max_slip_rate_m_per_s";
+        for (const auto &p : scene.observation_points())
+          series << "," << p.first << "_m";
+        series << "\n";
+
+        profile.open(dir + "/base-profile.csv");
+        profile << "# slip rate [m/s] of the contact nodes; first row: "
+                   "position along the base [m]"
+                << (dim == 3 ? " (then the z coordinate in the second row)" :
+                               "")
+                << "\n"
+                << "time_s";
+        for (const unsigned int k : order)
+          profile << "," << along_base[k];
+        profile << "\n";
+        if (dim == 3)
+          {
+            profile << "z_m";
+            for (const unsigned int k : order)
+              profile << "," << node_info[k].position[dim - 1];
+            profile << "\n";
+          }
+        catalogue.open(dir + "/events.csv");
+        catalogue << output::EventDetector::csv_header() << "\n";
+      }
+    series << std::setprecision(10);
+    profile << std::setprecision(8);
 
     time::StepDoubling<BodyState> controller(
       [this](const BodyState &s, const double t0, const double dt) {
@@ -804,10 +898,13 @@ namespace rsfcycle
         return state_distance(s1.alpha, s2.alpha);
       },
       parameters.time_stepping.tolerance,
-      parameters.time_stepping.initial_step,
+      run_state.tau,
       parameters.time_stepping.minimum_step,
       parameters.time_stepping.maximum_step,
       parameters.time_stepping.adaptive);
+
+    if (resume && run_state.has_candidate)
+      controller.set_candidate(run_state.candidate);
 
     const auto write_profile = [&](const double               time,
                                    const std::vector<double> &rates) {
@@ -816,18 +913,6 @@ namespace rsfcycle
         profile << "," << rates[k];
       profile << "\n";
     };
-
-    if (parameters.output.write_vtu)
-      output_results(state, t);
-    write_profile(t, slip_rates(state.v));
-    double last_output = 0, last_profile = 0;
-
-    std::vector<double> along_base(n_nodes);
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      along_base[k] = scene.along_base_coordinate(node_info[k].position);
-    output::EventDetector events(threshold, v0, along_base);
-    std::ofstream         catalogue(dir + "/events.csv");
-    catalogue << output::EventDetector::csv_header() << "\n";
     const auto tangential_displacement = [&](const Vector<double> &u) {
       std::vector<std::array<double, 2>> slip(n_nodes, {{0., 0.}});
       for (unsigned int k = 0; k < n_nodes; ++k)
@@ -835,13 +920,44 @@ namespace rsfcycle
           slip[k][l] = u[contact.nodes[k].dofs[l]];
       return slip;
     };
-    events.update(0., slip_rates(state.v), tangential_displacement(state.u));
+    if (!resume)
+      {
+        if (parameters.output.write_vtu)
+          output_results(state, t);
+        write_profile(t, slip_rates(state.v));
+        events.update(0.,
+                      slip_rates(state.v),
+                      tangential_displacement(state.u));
+      }
 
-    unsigned int  step = 0, max_fixed_point = 0;
-    unsigned long total_problems = 0;
-    double        min_dt = 1e300, max_dt = 0;
+    const auto checkpoint = [&]() {
+      TimerOutput::Scope scope(timer, "Checkpoint");
+      series.flush();
+      profile.flush();
+      catalogue.flush();
+      run_state.series_bytes    = series.tellp();
+      run_state.profile_bytes   = profile.tellp();
+      run_state.catalogue_bytes = catalogue.tellp();
+      run_state.tau             = controller.step_size();
+      run_state.has_candidate   = controller.candidate().has_value();
+      if (run_state.has_candidate)
+        run_state.candidate = *controller.candidate();
+      write_checkpoint(dir, run_state);
+      run_state.candidate = BodyState();
+    };
+
+    unsigned int &step            = run_state.step;
+    unsigned int &max_fixed_point = run_state.max_fixed_point;
+    auto         &total_problems  = run_state.total_problems;
+    double       &min_dt = run_state.min_dt, &max_dt = run_state.max_dt;
+    double       &last_output   = run_state.last_output;
+    double       &last_profile  = run_state.last_profile;
     const auto    wall_start    = std::chrono::steady_clock::now();
-    auto          last_progress = wall_start;
+    auto          last_progress = wall_start, last_checkpoint = wall_start;
+    const double  t_start = t;
+    stop_signal           = 0;
+    const auto old_int    = std::signal(SIGINT, handle_stop_signal);
+    const auto old_term   = std::signal(SIGTERM, handle_stop_signal);
 
     log << "*** Time loop to t = " << end_time << " s" << std::endl;
     {
@@ -856,6 +972,11 @@ namespace rsfcycle
           catch (const time::StepSizeUnderflow &e)
             {
               log << "Error: at t = " << t << " s: " << e.what() << std::endl;
+              checkpoint();
+              log << "A checkpoint of the last accepted state (t = " << t
+                  << " s) is in " << dir << std::endl;
+              std::signal(SIGINT, old_int);
+              std::signal(SIGTERM, old_term);
               throw;
             }
           ++step;
@@ -927,7 +1048,7 @@ namespace rsfcycle
               last_progress = now;
               const double elapsed =
                 std::chrono::duration<double>(now - wall_start).count();
-              const double eta = elapsed / t * (end_time - t);
+              const double eta = elapsed / (t - t_start) * (end_time - t);
               log << "*** Step " << step << ": t = " << std::setprecision(6)
                   << t << " s / " << end_time << " s, dt = " << dt
                   << " s, max V = " << max_rate / v0
@@ -942,8 +1063,34 @@ namespace rsfcycle
               series.flush();
               profile.flush();
             }
+
+          const bool checkpoint_due =
+            (parameters.output.checkpoint_steps > 0 &&
+             step % parameters.output.checkpoint_steps == 0) ||
+            (parameters.output.checkpoint_minutes > 0 &&
+             std::chrono::duration<double>(now - last_checkpoint).count() >=
+               60 * parameters.output.checkpoint_minutes);
+          if (checkpoint_due || stop_signal != 0)
+            {
+              checkpoint();
+              last_checkpoint = now;
+            }
+          if (stop_signal != 0)
+            {
+              log << "Stopped by signal " << stop_signal << " at t = " << t
+                  << " s; checkpoint written. Continue with: rsfcycle "
+                     "--resume "
+                  << dir << std::endl;
+              timer.print_summary();
+              std::signal(SIGINT, old_int);
+              std::signal(SIGTERM, old_term);
+              return false;
+            }
         }
     }
+    std::signal(SIGINT, old_int);
+    std::signal(SIGTERM, old_term);
+    checkpoint();
     if (parameters.output.write_vtu && pvd_records.back().first < t)
       output_results(state, t);
 
@@ -965,6 +1112,7 @@ namespace rsfcycle
         << summary.str();
     }
     timer.print_summary();
+    return true;
   }
 
   template class ProblemBase<2>;

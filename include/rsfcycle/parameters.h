@@ -82,6 +82,8 @@ namespace rsfcycle
     bool         write_vtu              = true;
     double       transition_time        = 0;
     unsigned int transition_events      = 2;
+    unsigned int checkpoint_steps       = 5000;
+    double       checkpoint_minutes     = 10;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -14,6 +14,7 @@
 #include <optional>
 #include <ostream>
 #include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/output/events.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
@@ -42,6 +43,15 @@ namespace rsfcycle
     std::vector<double> alpha;
     std::vector<double> shear_traction; // |friction force| / w per node [Pa]
     StepStatistics      statistics;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &u &v &a &alpha &shear_traction;
+      ar &statistics.fixed_point_iterations &statistics
+        .tnnmg_iterations                   &statistics.linear_iterations;
+    }
   };
 
   /**
@@ -66,9 +76,14 @@ namespace rsfcycle
     void
     setup();
 
-    /** setup() and the whole time loop with output. */
-    void
-    run(const ParameterHandler &prm);
+    /**
+     * setup() and the whole time loop with output; with `resume`, continue
+     * from the checkpoint in the run folder, appending to its files. Returns
+     * false if the run was stopped by SIGINT/SIGTERM (a checkpoint was
+     * written), true when it reached the end time.
+     */
+    bool
+    run(const ParameterHandler &prm, bool resume = false);
 
     /**
      * One Newmark step of length tau from state `old` at time t; no value
@@ -134,6 +149,42 @@ namespace rsfcycle
     }
 
   private:
+    /** What the time loop carries from step to step; a checkpoint. */
+    struct RunState
+    {
+      explicit RunState(output::EventDetector events)
+        : events(std::move(events))
+      {}
+      BodyState             state;
+      double                t               = 0;
+      double                tau             = 0;
+      unsigned int          step            = 0;
+      unsigned int          max_fixed_point = 0;
+      unsigned long         total_problems  = 0;
+      double                min_dt = 1e300, max_dt = 0;
+      double                last_output = 0, last_profile = 0;
+      output::EventDetector events;
+      long long series_bytes = 0, profile_bytes = 0, catalogue_bytes = 0;
+      bool      has_candidate = false; // the step controller's next step
+      BodyState candidate;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &state &t &tau &step &max_fixed_point &total_problems &min_dt &max_dt
+          &last_output &last_profile &events &series_bytes &profile_bytes
+            &catalogue_bytes &has_candidate;
+        if (has_candidate)
+          ar &candidate;
+      }
+    };
+
+    void
+    write_checkpoint(const std::string &dir, const RunState &run_state) const;
+    void
+    read_checkpoint(const std::string &dir, RunState &run_state);
+
     void
     make_grid();
     void

@@ -37,12 +37,12 @@ namespace rsfcycle
                           Patterns::Double(0),
                           "Length of the seismogenic patch along the base in "
                           "2D [m]");
-        prm.declare_entry("Patch length at z = 0",
+        prm.declare_entry("Patch length at z min",
                           "0.15",
                           Patterns::Double(0),
                           "3D: along-base length of the trapezoidal patch at "
                           "the lateral side z = 0 [m]");
-        prm.declare_entry("Patch length at z = width",
+        prm.declare_entry("Patch length at z max",
                           "0.25",
                           Patterns::Double(0),
                           "3D: along-base length of the trapezoidal patch at "
@@ -147,8 +147,8 @@ namespace rsfcycle
       width                 = prm.get_double("Width");
       patch_downdip_x       = prm.get_double("Patch down-dip end");
       patch_length          = prm.get_double("Patch length");
-      patch_length_0        = prm.get_double("Patch length at z = 0");
-      patch_length_1        = prm.get_double("Patch length at z = width");
+      patch_length_0        = prm.get_double("Patch length at z min");
+      patch_length_1        = prm.get_double("Patch length at z max");
       lower_thickness       = prm.get_double("Lower region thickness");
       upper.density         = prm.get_double("Density upper");
       lower.density         = prm.get_double("Density lower");

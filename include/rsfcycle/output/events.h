@@ -37,6 +37,14 @@ namespace rsfcycle
       {
         return rupture_max - rupture_min;
       }
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &start &end &nucleation_position &peak_slip_rate &rupture_min
+          &rupture_max &slip &recurrence;
+      }
     };
 
     /**
@@ -105,6 +113,14 @@ namespace rsfcycle
       write_summary(std::ostream &out,
                     double        transition_time,
                     unsigned int  transition_events) const;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &threshold &v0 &positions &active &running &previous_slip
+          &slip_at_start &last_start &catalogue;
+      }
 
     private:
       double                             threshold, v0;

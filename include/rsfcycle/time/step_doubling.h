@@ -143,6 +143,24 @@ namespace rsfcycle
         forget();
       }
 
+      /**
+       * The candidate for the next accepted step (one step of step_size()
+       * from the current state), if already computed; a checkpoint stores it
+       * so that a resumed run repeats the uninterrupted one exactly.
+       */
+      const std::optional<State> &
+      candidate() const
+      {
+        return r1;
+      }
+
+      void
+      set_candidate(std::optional<State> next)
+      {
+        r1 = std::move(next);
+        r2.reset();
+      }
+
       /** Spatial problems solved (stepper calls) in the last advance(). */
       unsigned int
       n_spatial_problems() const

@@ -320,6 +320,18 @@ namespace rsfcycle
   void
   ProblemBase<dim>::compute_initial_state()
   {
+    for (const auto &[name, matrix] :
+         {std::make_pair("mass (densities)", &mass_matrix),
+          std::make_pair("viscosity", &viscosity_matrix),
+          std::make_pair("stiffness (bulk modulus, Poisson ratio)",
+                         &stiffness_matrix)})
+      if (!std::isfinite(matrix->frobenius_norm()))
+        throw std::runtime_error(std::string("the ") + name +
+                                 " matrix has non-finite entries: the "
+                                 "material parameters overflow double");
+    if (!std::isfinite(body_force.l2_norm()))
+      throw std::runtime_error("the gravity load is not finite (Gravity, "
+                               "densities)");
     SparseMatrix<double> K(sparsity_pattern);
     K.copy_from(stiffness_matrix);
     Vector<double> rhs(body_force);
@@ -350,6 +362,13 @@ namespace rsfcycle
         if (r * total < 0)
           ++n_tensile;
       }
+    for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+      if (!std::isfinite(node_info[k].normal_force))
+        throw std::runtime_error(
+          "non-finite normal stress from the gravity equilibrium at the base "
+          "node at s = " +
+          std::to_string(scene.along_base_coordinate(node_info[k].position)) +
+          " m");
     if (n_tensile > 0)
       log << "Warning: " << n_tensile
           << " contact nodes carry a tensile normal reaction in the gravity "
@@ -582,7 +601,18 @@ namespace rsfcycle
         next.statistics.tnnmg_iterations += stats.iterations;
         next.statistics.linear_iterations += stats.linear_iterations;
         if (!stats.converged)
-          return {};
+          {
+            std::ostringstream why;
+            why << "t = " << t + tau << " s, step " << tau << " s: TNNMG "
+                << (std::isfinite(stats.relative_change) ?
+                      "did not converge (relative change " :
+                      "produced non-finite values (relative change ")
+                << stats.relative_change << " after " << stats.iterations
+                << " iterations) in fixed-point iteration " << k << "; "
+                << first_non_finite(next.v);
+            last_failure = why.str();
+            return {};
+          }
         if (explicit_coupling)
           {
             converged = true;
@@ -592,11 +622,25 @@ namespace rsfcycle
         const double d = state_distance(alpha_new, alpha);
         alpha.swap(alpha_new);
         if (!std::isfinite(d))
-          return {};
+          {
+            last_failure = "t = " + std::to_string(t + tau) +
+                           " s: non-finite state distance; " +
+                           first_non_finite(next.v);
+            return {};
+          }
         if (d <= parameters.solver.fixed_point_tolerance)
           {
             converged = true;
             break;
+          }
+        if (k == parameters.solver.max_fixed_point_iterations)
+          {
+            std::ostringstream why;
+            why << "t = " << t + tau << " s, step " << tau
+                << " s: the fixed-point iteration did not converge in " << k
+                << " iterations (state distance " << d
+                << " > Fixed-point tolerance)";
+            last_failure = why.str();
           }
       }
     if (!converged)
@@ -631,11 +675,43 @@ namespace rsfcycle
 
     if (!std::isfinite(next.u.l2_norm()) || !std::isfinite(next.v.l2_norm()) ||
         !std::isfinite(next.a.l2_norm()))
-      return {};
-    for (const double a : next.alpha)
-      if (!std::isfinite(a))
+      {
+        last_failure = "t = " + std::to_string(t + tau) +
+                       " s: non-finite displacement, velocity or "
+                       "acceleration; " +
+                       first_non_finite(next.v);
         return {};
+      }
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      if (!std::isfinite(next.alpha[k]))
+        {
+          last_failure =
+            "t = " + std::to_string(t + tau) +
+            " s: non-finite friction state at the base node at s = " +
+            std::to_string(scene.along_base_coordinate(node_info[k].position)) +
+            " m";
+          return {};
+        }
     return next;
+  }
+
+
+  template <int dim>
+  std::string
+  ProblemBase<dim>::first_non_finite(const Vector<double> &v) const
+  {
+    for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+      for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
+        if (!std::isfinite(v[contact.nodes[k].dofs[l]]))
+          return "non-finite slip rate at the base node at s = " +
+                 std::to_string(
+                   scene.along_base_coordinate(node_info[k].position)) +
+                 " m";
+    for (types::global_dof_index i = 0; i < v.size(); ++i)
+      if (!std::isfinite(v[i]))
+        return "non-finite velocity in the interior (dof " + std::to_string(i) +
+               ")";
+    return "all velocities finite";
   }
 
 
@@ -971,7 +1047,9 @@ namespace rsfcycle
             }
           catch (const time::StepSizeUnderflow &e)
             {
-              log << "Error: at t = " << t << " s: " << e.what() << std::endl;
+              log << "Error: at t = " << t << " s: " << e.what()
+                  << "\nLast failed spatial problem: " << last_failure
+                  << std::endl;
               checkpoint();
               log << "A checkpoint of the last accepted state (t = " << t
                   << " s) is in " << dir << std::endl;

@@ -185,6 +185,13 @@ namespace rsfcycle
     void
     read_checkpoint(const std::string &dir, RunState &run_state);
 
+    /** Where the first non-finite velocity is (for diagnoses). */
+    std::string
+    first_non_finite(const Vector<double> &v) const;
+
+    /** Why the last spatial problem failed (diagnosis on step underflow). */
+    std::string last_failure;
+
     void
     make_grid();
     void

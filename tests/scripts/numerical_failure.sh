@@ -1,0 +1,37 @@
+#!/bin/bash
+# Numerical-failure test (issue 6): provokes each failure of a spatial
+# problem and checks that the step is rejected and halved down to the
+# minimum step, and that the run then stops with exit status 1, a diagnosis
+# (time, which quantity; for non-finite values where on the base) and a
+# checkpoint of the last accepted state:
+#  - the fixed-point iteration capped at 1 iteration,
+#  - TNNMG capped at 1 iteration,
+#  - material parameters whose matrices overflow (stopped in the set-up).
+# Usage: numerical_failure.sh RSFCYCLE SOURCE_DIR WORK_DIR
+set -u
+exe=$1; src=$2; work=$3
+rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
+n_pass=0; n_fail=0
+run_case() { # name, body, expected text in the screen output
+  printf 'include %s/prm/wedge-2d.prm\nset End time = 100\nset Output directory = %s\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Write VTU = false\nend\nsubsection Time stepping\nset Minimum step = 0.001\nend\n%b\n' \
+    "$src" "$1" "$2" > "$1.prm"
+  "$exe" "$1.prm" > "$1.log" 2>&1
+  local status=$?
+  if [ $status -eq 1 ] && grep -q "$3" "$1.log" &&
+     grep -q "^rsfcycle: error: " "$1.log"; then
+    n_pass=$((n_pass + 1))
+  else
+    n_fail=$((n_fail + 1)); echo "FAILED $1 (exit $status)"; tail -5 "$1.log"
+  fi
+  grep -E "Last failed|^rsfcycle: error" "$1.log"
+}
+run_case fixed-point 'subsection Solver\nset Maximum fixed-point iterations = 1\nend' \
+  "the fixed-point iteration did not converge"
+[ -f fixed-point/checkpoint.bin ] || { n_fail=$((n_fail + 1)); echo "FAILED: no checkpoint"; }
+run_case tnnmg 'subsection Solver\nset Maximum TNNMG iterations = 1\nend' \
+  "TNNMG did not converge"
+[ -f tnnmg/checkpoint.bin ] || { n_fail=$((n_fail + 1)); echo "FAILED: no checkpoint"; }
+run_case overflow 'subsection Wedge\nset Bulk modulus = 1e308\nend' \
+  "non-finite entries"
+echo "numerical failures: $n_pass passed, $n_fail failed"
+[ $n_fail -eq 0 ]

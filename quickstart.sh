@@ -38,10 +38,11 @@ cmake --build build -j"$jobs"
 
 # 3. Run or test.
 if [[ $mode == run ]]; then
-  build/rsfcycle prm/wedge-2d.prm
+  # --force: the demo run replaces the folder of an earlier demo run
+  build/rsfcycle --force prm/wedge-2d.prm
   outdir=$(sed -n 's/^ *set Output directory *= *//p' prm/wedge-2d.prm)
-  echo "Output: $PWD/$outdir (parameters.prm, time-series.csv," \
-    "base-profile.csv, solution.pvd)"
+  echo "Output: $PWD/$outdir (parameters.prm, log.txt, time-series.csv," \
+    "base-profile.csv, events.csv, summary.txt, solution.pvd)"
 else
   format=clang-format
   command -v clang-format >/dev/null || format=clang-format-14

@@ -11,6 +11,7 @@
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/scenes/spring_slider.h>
 #include <streambuf>
 #include <string>
 
@@ -61,9 +62,13 @@ namespace
       << "\n"
          "  wedge: the laboratory subduction wedge of Pipping et al. (2016),\n"
          "         2D (plane strain) or 3D (`Dimension = 3`), parameters in\n"
-         "         subsection `Wedge`.\n\n"
+         "         subsection `Wedge`.\n"
+         "  spring-slider: one block on a rate-and-state base loaded\n"
+         "         through a spring (no mesh), parameters in subsection\n"
+         "         `Spring slider`.\n\n"
          "Ready-made files: prm/wedge-2d.prm (default resolution),\n"
-         "prm/wedge-2d-paper.prm (the paper's resolution).\n";
+         "prm/wedge-2d-paper.prm (the paper's resolution),\n"
+         "prm/spring-slider.prm (stick-slip), prm/spring-slider-stable.prm.\n";
   }
 
   /**
@@ -139,6 +144,19 @@ namespace
     return problem.run(prm, resume);
   }
 
+  /** The spring-slider scene: no mesh, its own time loop (issue 4). */
+  void
+  run_spring_slider(const rsfcycle::Parameters &parameters,
+                    dealii::ParameterHandler   &prm)
+  {
+    rsfcycle::scenes::SpringSlider slider(parameters, prm);
+    prepare_output_directory(parameters.run.output_directory,
+                             parameters.run.overwrite_output);
+    std::ofstream log_file(parameters.run.output_directory + "/log.txt");
+    TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
+    std::ostream  log(&tee);
+    slider.run(prm, log);
+  }
 } // namespace
 
 
@@ -195,11 +213,16 @@ main(int argc, char **argv)
       const bool resume = !resume_dir.empty();
       if (resume)
         parameters.run.output_directory = resume_dir;
-      const bool finished = (parameters.run.dimension == 2) ?
-                              run<2>(parameters, prm, resume) :
-                              run<3>(parameters, prm, resume);
-      if (!finished)
-        return 130;
+      if (parameters.run.scene == "spring-slider")
+        run_spring_slider(parameters, prm);
+      else
+        {
+          const bool finished = (parameters.run.dimension == 2) ?
+                                  run<2>(parameters, prm, resume) :
+                                  run<3>(parameters, prm, resume);
+          if (!finished)
+            return 130;
+        }
     }
   catch (std::exception &exc)
     {

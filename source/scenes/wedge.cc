@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/scenes/spring_slider.h>
 #include <rsfcycle/scenes/wedge.h>
 
 namespace rsfcycle
@@ -399,7 +400,7 @@ namespace rsfcycle
     std::string
     scene_names()
     {
-      return "wedge";
+      return "wedge|spring-slider";
     }
 
 
@@ -407,6 +408,7 @@ namespace rsfcycle
     declare_scene_parameters(ParameterHandler &prm)
     {
       Wedge<2>::declare_parameters(prm);
+      SpringSlider::declare_parameters(prm);
     }
 
 

@@ -5,6 +5,9 @@
 // normal forces of the gravity equilibrium, and selected rows of
 // time-series.csv with slip rates as log10(V/v0) and uplift in micrometres,
 // so that numdiff's absolute tolerance sees a wrong sign or factor.
+// Scene = spring-slider: a digest of the spring-slider run instead (event
+// count, recurrence time, slip per cycle / (v0 T), peak log10(V/v0), final
+// state against steady sliding), see run_spring_slider().
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <fstream>
@@ -13,6 +16,7 @@
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/scenes/spring_slider.h>
 #include <sstream>
 
 namespace
@@ -75,6 +79,110 @@ namespace
           out << " " << row[k] * 1e6;
         out << "\n";
       }
+
+    // The event catalogue: times, log10 of the peak slip rate over v0,
+    // rupture width [m], slip [um], recurrence [s].
+    std::ifstream catalogue(parameters.run.output_directory + "/events.csv");
+    std::string   entry;
+    std::getline(catalogue, entry); // header
+    unsigned int       n_events = 0;
+    std::ostringstream rows_out;
+    while (std::getline(catalogue, entry))
+      {
+        std::vector<std::string> cells;
+        std::stringstream        cells_in(entry);
+        std::string              cell;
+        while (std::getline(cells_in, cell, ','))
+          cells.push_back(cell);
+        ++n_events;
+        rows_out << cells[0] << " start " << std::stod(cells[1]) << " end "
+                 << std::stod(cells[2]) << " log10(peak/v0) "
+                 << std::log10(std::stod(cells[5]) / v0) << " width "
+                 << std::stod(cells[6]) << " slip " << std::stod(cells[7])
+                 << " recurrence "
+                 << (cells.size() > 8 && !cells[8].empty() ? cells[8] : "-")
+                 << "\n";
+      }
+    out << "events.csv rows: " << n_events << "\n" << rows_out.str();
+  }
+
+  /**
+   * Digest of a spring-slider run: physical checks printed on scales that
+   * numdiff can see (log10(V/v0), ratios, micrometres) and yes/no checks.
+   */
+  void
+  run_spring_slider(const rsfcycle::Parameters &parameters,
+                    dealii::ParameterHandler   &prm,
+                    std::ostream               &out)
+  {
+    rsfcycle::scenes::SpringSlider slider(parameters, prm);
+    std::ostringstream             log;
+    const auto                     summary = slider.run(prm, log);
+    std::cout << log.str();
+
+    double v0, k, eta;
+    prm.enter_subsection("Spring slider");
+    v0  = prm.get_double("Load point velocity");
+    k   = prm.get_double("Stiffness");
+    eta = prm.get_double("Radiation damping");
+    prm.leave_subsection();
+    const auto &events = summary.events;
+    const auto  yes_no = [](const bool b) { return b ? "yes" : "no"; };
+    out << std::setprecision(5);
+    out << "k / k_crit = " << k / slider.critical_stiffness() << "\n";
+    out << "events: " << events.size() << "\n";
+    out << "max fixed-point iterations per step <= 10: "
+        << yes_no(summary.max_fixed_point <= 10) << "\n";
+    if (events.size() >= 3)
+      {
+        const double T    = summary.mean_recurrence_time;
+        double       peak = 0, min_slip = 1e300, max_slip = 0;
+        for (std::size_t i = 1; i < events.size(); ++i)
+          {
+            peak     = std::max(peak, events[i].peak_rate);
+            min_slip = std::min(min_slip, events[i].slip);
+            max_slip = std::max(max_slip, events[i].slip);
+          }
+        // Periodic cycle: over a period the block slips as far as the
+        // load point moves, v0 T.
+        const double cycle_slip =
+          (events.back().start_slip - events[1].start_slip) /
+          (events.size() - 2);
+        out << "mean recurrence time (events 2..) [s]: " << T << "\n";
+        out << "recurrence time varies by < 1%: "
+            << yes_no(std::abs(events.back().start -
+                               events[events.size() - 2].start - T) < 0.01 * T)
+            << "\n";
+        out << "slip per cycle / (v0 T): " << cycle_slip / (v0 * T)
+            << ", within 1% of 1: "
+            << yes_no(std::abs(cycle_slip / (v0 * T) - 1) < 0.01) << "\n";
+        out << "event slip (minus v0 duration) [um]: " << min_slip * 1e6
+            << " to " << max_slip * 1e6 << "\n";
+        out << "peak log10(V / v0): " << std::log10(peak / v0) << "\n";
+        // Quasi-dynamic: eta V <= k slip_event + friction drop, so the peak
+        // rate cannot exceed the spring's stress drop over the radiation
+        // damping by much: check V_peak < (k * event slip) / eta.
+        if (eta > 0)
+          out << "peak V < k (event slip) / eta: "
+              << yes_no(peak < k * max_slip / eta) << "\n";
+        out << "event duration / recurrence time < 0.05: "
+            << yes_no((events.back().end - events.back().start) < 0.05 * T)
+            << "\n";
+      }
+    const auto  &p     = slider.friction_parameters();
+    const double V     = summary.final_state.velocity;
+    const double mu_ss = rsfcycle::friction::steady_state_friction_coefficient(
+      p, slider.load_point_velocity(summary.final_time));
+    out << "final log10(V / v0): " << std::log10(std::abs(V) / v0) << "\n";
+    out << "final slip / (v0 t): "
+        << summary.final_state.slip / (v0 * summary.final_time) << "\n";
+    out << "final (mu - mu_ss(v0)) / a: "
+        << (summary.final_friction - mu_ss) / p.a << "\n";
+    if (events.empty())
+      out << "final |V / v0 - 1| < 1e-4: "
+          << yes_no(std::abs(V / v0 - 1) < 1e-4)
+          << ", |mu - mu_ss(v0)| < 1e-6: "
+          << yes_no(std::abs(summary.final_friction - mu_ss) < 1e-6) << "\n";
   }
 } // namespace
 
@@ -93,7 +201,9 @@ main(int argc, char **argv)
 
       std::ofstream out("output");
       out << std::setprecision(8);
-      if (parameters.run.dimension == 2)
+      if (parameters.run.scene == "spring-slider")
+        run_spring_slider(parameters, prm, out);
+      else if (parameters.run.dimension == 2)
         run<2>(parameters, prm, out);
       else
         run<3>(parameters, prm, out);

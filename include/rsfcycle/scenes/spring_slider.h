@@ -1,0 +1,167 @@
+#ifndef rsfcycle_scenes_spring_slider_h
+#define rsfcycle_scenes_spring_slider_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <optional>
+#include <ostream>
+#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/time/rate_state_coupling.h>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    using dealii::ParameterHandler;
+
+    /**
+     * The spring-slider (issue 4): one block on a rate-and-state base,
+     * loaded through a spring of stiffness k by a load point moving at
+     * v_lp(t) (v0, optionally stepped to f v0 at a given time). All
+     * quantities are per unit area of the base: mass m [kg/m^2], stiffness
+     * k [Pa/m], stresses [Pa], radiation damping eta [Pa s/m]. The momentum
+     * balance of the slip delta, V = delta',
+     *
+     *   m V' + eta V + N mu(|V|, alpha) sign V + C sign V
+     *     = tau0 + k (u_lp(t) - delta),
+     *
+     * is the 1-DOF version of (1) + (10) (N = |sigma_n|, C the cohesion);
+     * m = 0 gives the quasi-dynamic spring-slider with radiation damping.
+     * The pre-stress tau0 is chosen so that the block is in equilibrium at
+     * t = 0 with the initial slip rate and state (zero acceleration), and
+     * the slip starts at 0.
+     *
+     * It is time-stepped exactly like the wedge: trapezoidal Newmark in the
+     * velocity (15), whose 1-DOF problem
+     *   (2m/tau + eta + tau k/2) V_n + N mu(V_n) + C sign V_n = rhs
+     * is solved exactly by friction::solve_local_problem<1>; the
+     * rate/state fixed point (18) or explicit decoupling
+     * (time::couple_rate_and_state); the closed-form state update (17);
+     * and step doubling (time::StepDoubling) with the distance (14), which
+     * for one node is |alpha1 - alpha2|. It allocates no mesh, no
+     * multigrid and no VTU writer.
+     *
+     * Alternatively (`Integrator = arkode`) the same ODE is integrated by
+     * SUNDIALS ARKODE (implicit, adaptive, relative tolerance = the
+     * step-doubling tolerance), as an independent reference; see
+     * integrate_reference().
+     */
+    class SpringSlider
+    {
+    public:
+      /** The state of the block after a step. */
+      struct State
+      {
+        double       slip                   = 0; // delta [m]
+        double       velocity               = 0; // V [m/s]
+        double       acceleration           = 0; // V' [m/s^2]
+        double       alpha                  = 0; // log(theta V*/L) [-]
+        unsigned int fixed_point_iterations = 0;
+      };
+
+      /** One event: a maximal interval with V > threshold (MODEL.md §7). */
+      struct Event
+      {
+        double start      = 0; // [s], interpolated in log V between steps
+        double start_slip = 0; // slip at the start [m]
+        double end        = 0; // [s]
+        double peak_rate  = 0; // [m/s]
+        double slip       = 0; // slip during the event minus v0 duration [m]
+      };
+
+      /** What a run returns besides its files. */
+      struct Summary
+      {
+        unsigned int       steps                = 0;
+        unsigned long      spatial_problems     = 0;
+        unsigned int       max_fixed_point      = 0;
+        double             min_step             = 0;
+        double             max_step             = 0;
+        double             wall_time            = 0; // [s]
+        double             final_time           = 0;
+        State              final_state          = {};
+        double             final_friction       = 0;
+        std::vector<Event> events               = {};
+        double             mean_recurrence_time = 0; // events 2.. [s]
+        double             peak_rate            = 0; // [m/s]
+      };
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /** Reads subsection "Spring slider" and the solver settings. */
+      SpringSlider(const Parameters &parameters, ParameterHandler &prm);
+
+      /**
+       * Run to the end time: write parameters.prm, time-series.csv and
+       * events.csv into the output directory, progress and a summary to log.
+       */
+      Summary
+      run(const ParameterHandler &prm, std::ostream &log);
+
+      /** The state at t = 0 (initial slip rate and state, slip 0). */
+      State
+      initial_state() const;
+
+      /**
+       * One Newmark step (15) of length tau from the state at time t, with
+       * the rate/state coupling; nothing if the coupling failed.
+       */
+      std::optional<State>
+      newmark_step(const State &old, double t, double tau) const;
+
+      /** Load-point displacement u_lp(t) [m] and velocity v_lp(t) [m/s]. */
+      double
+      load_point_displacement(double t) const;
+      double
+      load_point_velocity(double t) const;
+
+      /** The friction coefficient of a state. */
+      double
+      friction_coefficient(const State &s) const;
+
+      /** The rate-and-state parameters of the base. */
+      const friction::Parameters &
+      friction_parameters() const
+      {
+        return friction;
+      }
+
+      /** The critical stiffness (b - a) N / L [Pa/m]. */
+      double
+      critical_stiffness() const;
+
+    private:
+      /**
+       * The reference: the ODE integrated by ARKODE. Dynamic (m > 0) in the
+       * variables (delta, V, alpha), quasi-dynamic in (delta, log V, alpha),
+       * where V follows from differentiating the force balance. Requires
+       * C = 0 (the cohesion makes the ODE non-smooth at V = 0).
+       */
+      Summary
+      integrate_reference(std::ostream &log);
+
+      const Parameters    &parameters;
+      friction::Parameters friction;
+      friction::StateLaw   state_law;
+      time::Coupling       coupling;
+      std::string          integrator;
+      double               mass;
+      double               stiffness;
+      double               normal_stress;
+      double               cohesion;
+      double               damping;
+      double               v0;
+      double               step_time;
+      double               step_factor;
+      double               initial_rate;
+      double               initial_alpha;
+      double               prestress;
+      double               output_period;
+      double               sample_spacing;
+    };
+  } // namespace scenes
+} // namespace rsfcycle
+
+#endif

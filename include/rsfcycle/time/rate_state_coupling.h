@@ -1,0 +1,86 @@
+#ifndef rsfcycle_time_rate_state_coupling_h
+#define rsfcycle_time_rate_state_coupling_h
+
+#include <cmath>
+#include <optional>
+#include <utility>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    /** Rate/state coupling within one time step (MODEL.md §4.1). */
+    enum class Coupling
+    {
+      fixed_point,
+      explicit_decoupling
+    };
+
+    /**
+     * The coupling between slip rate and state within one time step, generic
+     * in the velocity and state types so that every scene (wedge,
+     * spring-slider) runs the same logic:
+     *  - fixed point (18): alpha^0 = the old state; for k = 1, 2, ...:
+     *    solve the velocity v^k with alpha^{k-1}; alpha^k = state update with
+     *    the mean slip rate |(v_old + v^k)/2|; stop when
+     *    distance(alpha^k, alpha^{k-1}) <= tolerance (19);
+     *  - explicit decoupling: the state is updated once with the old slip
+     *    rate |v_old|, then the velocity is solved once.
+     *
+     * The callables:
+     *  - solve_velocity(alpha, v) -> bool: solve (15) for v with the state
+     *    alpha (v holds the previous iterate on entry); false on failure;
+     *  - update_state(v_new, weight_new, alpha): alpha = the state update
+     *    from the old state over the step with the velocity
+     *    (1 - weight_new) v_old + weight_new v_new;
+     *  - distance(alpha1, alpha2): the distance (14).
+     *
+     * On success v and alpha hold the new velocity and state, and the number
+     * of velocity solves (fixed-point iterations) is returned; on failure
+     * (a failed velocity solve, a non-finite distance, or no convergence
+     * within max_iterations) nothing is returned, and the caller rejects the
+     * step.
+     */
+    template <typename Velocity,
+              typename StateVector,
+              typename SolveVelocity,
+              typename UpdateState,
+              typename Distance>
+    std::optional<unsigned int>
+    couple_rate_and_state(const Coupling     coupling,
+                          const double       tolerance,
+                          const unsigned int max_iterations,
+                          const Velocity    &v_old,
+                          Velocity          &v,
+                          StateVector       &alpha,
+                          SolveVelocity    &&solve_velocity,
+                          UpdateState      &&update_state,
+                          Distance         &&distance)
+    {
+      if (coupling == Coupling::explicit_decoupling)
+        {
+          update_state(v_old, 0., alpha);
+          if (!solve_velocity(alpha, v))
+            return {};
+          return 1u;
+        }
+
+      StateVector alpha_new = alpha;
+      for (unsigned int k = 1; k <= max_iterations; ++k)
+        {
+          if (!solve_velocity(alpha, v))
+            return {};
+          update_state(v, 0.5, alpha_new);
+          const double d = distance(alpha_new, alpha);
+          std::swap(alpha, alpha_new);
+          if (!std::isfinite(d))
+            return {};
+          if (d <= tolerance)
+            return k;
+        }
+      return {};
+    }
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

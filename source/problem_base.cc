@@ -600,6 +600,8 @@ namespace rsfcycle
         next.statistics.fixed_point_iterations = k;
         next.statistics.tnnmg_iterations += stats.iterations;
         next.statistics.linear_iterations += stats.linear_iterations;
+        work.tnnmg_iterations += stats.iterations;
+        work.linear_iterations += stats.linear_iterations;
         if (!stats.converged)
           {
             std::ostringstream why;
@@ -941,7 +943,7 @@ namespace rsfcycle
                   "linear_iterations,spatial_problems,max_slip_rate_m_per_s";
         for (const auto &p : scene.observation_points())
           series << "," << p.first << "_m";
-        series << "\n";
+        series << ",all_tnnmg_iterations,all_linear_iterations\n";
 
         profile.open(dir + "/base-profile.csv");
         profile << "# slip rate [m/s] of the contact nodes; first row: "
@@ -1096,13 +1098,19 @@ namespace rsfcycle
                  << controller.n_spatial_problems() << "," << max_rate;
           for (const double z : uplift)
             series << "," << z;
-          series << "\n";
+          // the work of every spatial problem solved for this step, the
+          // step-doubling comparisons and rejected attempts included
+          series << "," << work.tnnmg_iterations << ","
+                 << work.linear_iterations << "\n";
+          work = StepStatistics();
 
-          // Profiles and snapshots at their interval, denser during events.
-          const double eps = 1e-12 * std::max(1., t);
+          // Profiles densely while slip is fast (events and the afterslip
+          // around them: max V > 2 v0), else at their interval.
+          const double eps  = 1e-12 * std::max(1., t);
+          const bool   fast = in_event || max_rate > 2 * v0;
           if (t >= last_profile +
-                     (in_event ? parameters.output.event_profile_interval :
-                                 parameters.output.profile_interval) -
+                     (fast ? parameters.output.event_profile_interval :
+                             parameters.output.profile_interval) -
                      eps)
             {
               write_profile(t, rates);

@@ -189,6 +189,9 @@ namespace rsfcycle
     std::string
     first_non_finite(const Vector<double> &v) const;
 
+    /** Iterations of all spatial problems since the last accepted step. */
+    StepStatistics work;
+
     /** Why the last spatial problem failed (diagnosis on step underflow). */
     std::string last_failure;
 

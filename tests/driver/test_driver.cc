@@ -75,7 +75,7 @@ namespace
       {
         const auto &row = rows[r];
         out << row[0] << " " << std::log10(std::max(row[6], 1e-300) / v0);
-        for (std::size_t k = 7; k < row.size(); ++k)
+        for (std::size_t k = 7; k < 7 + scene->observation_points().size(); ++k)
           out << " " << row[k] * 1e6;
         out << "\n";
       }

@@ -1,0 +1,307 @@
+#!/usr/bin/python3
+"""Stiff / extreme-case matrix of the spring-slider (issue 4, item 5).
+
+Every case is prm/spring-slider.prm (quasi-dynamic stick-slip block:
+a = 0.01, b = 0.015, mu* = 0.6, V* = 1e-6 m/s, L = 1e-5 m,
+|sigma_n| = 1e6 Pa, k = k_crit / 2 = 2.5e8 Pa/m, eta = 5e6 Pa s/m,
+v0 = 1e-6 m/s, ageing law, delta = epsilon = 1e-5) with one parameter (or
+one coherent group of parameters) pushed to an extreme, run quasi-dynamic
+(Mass = 0) and, where inertia can matter, dynamic (Mass = 1e6 kg/m^2).
+Each case gets its own .prm in runs/ and is run with
+
+    rsfcycle --force runs/<case>.prm
+
+under a wall-clock timeout, one case at a time. Per case the table lists
+the outcome (finished / stopped, with the one-line diagnosis / timeout /
+crashed), the accepted steps, the smallest and largest step, the wall time
+of the process, and whether any field of time-series.csv (every column,
+every row) is non-finite (nan / inf, or not a number at all). events.csv
+and the "Final:" line are checked too. Writes results.csv and the table of
+README.md (between the markers).
+
+    /usr/bin/python3 benchmarks/stiff/run.py [path/to/rsfcycle] [case ...]
+"""
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+ARGS = sys.argv[1:]
+EXE = (ARGS.pop(0) if ARGS and not ARGS[0].startswith("-") and
+       os.path.isfile(ARGS[0]) else os.path.join(ROOT, "build", "rsfcycle"))
+ONLY = set(ARGS)  # case names to run (default: all)
+WORK = os.path.join(HERE, "runs")
+TIMEOUT = 60  # wall-clock limit per case [s]
+DYN_MASS = 1e6  # [kg/m^2] for the dynamic variants
+
+BASE = {
+    "Mass": 0, "Stiffness": 2.5e8, "Normal stress": 1e6, "Cohesion": 0,
+    "Radiation damping": 5e6, "Load point velocity": 1e-6,
+    "Velocity step time": 1e300, "Velocity step factor": 1,
+    "a": 0.01, "b": 0.015, "mu star": 0.6, "V star": 1e-6, "L": 1e-5,
+    "Initial slip rate": 2e-6, "Initial state": 0,
+}
+
+
+def kcrit(p):
+    return (p["b"] - p["a"]) * p["Normal stress"] / p["L"]
+
+
+CASES = []  # (name, what, end time, maximum step, spring-slider entries)
+
+
+def case(name, what, end, dynamic=False, k_over_kc=None, max_step=None,
+         **kw):
+    p = dict(BASE)
+    p.update({k.replace("_", " "): v for k, v in kw.items()})
+    if k_over_kc is not None:
+        p["Stiffness"] = k_over_kc * kcrit(p)
+    if max_step is None:  # the characteristic time L / v0
+        max_step = p["L"] / p["Load point velocity"]
+    CASES.append((name, what, end, max_step, p))
+    if dynamic:
+        q = dict(p)
+        q["Mass"] = DYN_MASS
+        CASES.append((name + "-dyn", what + ", dynamic", end, max_step, q))
+
+
+def matrix():
+    case("base", "prm/spring-slider.prm, k = kc/2", 500, dynamic=True)
+    # a down to 1e-4, mu*/a = 1000 (b - a = 0.015 kept)
+    case("a1e-4-mu0.1", "a = 1e-4, b = 0.0151, mu* = 0.1 (mu*/a = 1000), "
+         "k = kc/2", 500, dynamic=True, k_over_kc=0.5,
+         a=1e-4, b=0.0151, mu_star=0.1)
+    case("a8e-4-mu0.8", "a = 8e-4, b = 0.0158, mu* = 0.8 (mu*/a = 1000), "
+         "k = kc/2", 500, dynamic=True, k_over_kc=0.5,
+         a=8e-4, b=0.0158, mu_star=0.8)
+    # L from 1e-8 to 1e-2 m (k = kc/2 follows L)
+    case("L1e-8", "L = 1e-8 m, k = kc/2 = 2.5e11", 0.5, dynamic=True,
+         k_over_kc=0.5, L=1e-8)
+    case("L1e-2", "L = 1e-2 m, k = kc/2 = 2.5e5", 5e5, dynamic=True,
+         k_over_kc=0.5, L=1e-2)
+    # b - a from -0.02 to +0.05
+    case("b-a=-0.02", "a = 0.035, b = 0.015 (strengthening), k = 2.5e8",
+         500, a=0.035, b=0.015)
+    case("b-a=0", "a = b = 0.015 (neutral, kc = 0), k = 2.5e8", 500,
+         a=0.015, b=0.015)
+    case("b-a=+0.05", "a = 0.01, b = 0.06, k = kc/2 = 2.5e9", 500,
+         dynamic=True, k_over_kc=0.5, b=0.06)
+    # cohesion 0 and 1e3 Pa at |sigma_n| = 1e4 Pa (mu sigma_n ~ 6e3 Pa)
+    case("coh0-sn1e4", "C = 0, sigma_n = 1e4, k = kc/2 = 2.5e6", 500,
+         k_over_kc=0.5, Normal_stress=1e4)
+    case("coh1e3-sn1e4", "C = 1e3 Pa, sigma_n = 1e4, k = kc/2 = 2.5e6", 500,
+         dynamic=True, k_over_kc=0.5, Normal_stress=1e4, Cohesion=1e3)
+    # cohesion above the driving stress: V(0) = 0, so the prestress is 0 and
+    # the spring stress k v0 t = 2.5 Pa/s * t stays below C = 1e3 Pa until
+    # t = 400 s: the block must stay stuck (slip = 0) ...
+    case("coh1e3-stuck", "C = 1e3 > k v0 t (<= 500 Pa), V(0) = 0, "
+         "sigma_n = 1e4, k = 2.5e6", 200, dynamic=True, k_over_kc=0.5,
+         Normal_stress=1e4, Cohesion=1e3, Initial_slip_rate=0)
+    # ... and start to slide once k v0 t passes C
+    case("coh1e3-release", "as coh1e3-stuck, to t = 5000 s "
+         "(k v0 t passes C at 400 s)", 5000, k_over_kc=0.5,
+         Normal_stress=1e4, Cohesion=1e3, Initial_slip_rate=0)
+    # v0 from 1e-12 to 1e-2 m/s (V* = 1e-6 kept); as in the base case the
+    # state starts steady at v0 (alpha = ln(V*/v0)) and V(0) = 2 v0
+    case("v0=1e-12", "v0 = 1e-12 m/s, V(0) = 2e-12, steady state at v0, "
+         "k = kc/2", 1e9, dynamic=True, Load_point_velocity=1e-12,
+         Initial_slip_rate=2e-12,
+         Initial_state=math.log(1e-6 / 1e-12))
+    case("v0=1e-2", "v0 = 1e-2 m/s, V(0) = 2e-2, steady state at v0, "
+         "k = kc/2", 1, dynamic=True, Load_point_velocity=1e-2,
+         Initial_slip_rate=2e-2, Initial_state=math.log(1e-6 / 1e-2))
+    # load-point velocity step 1e-10 -> 1e-2 m/s from steady sliding, on the
+    # stable spring k = 2 kc; the step at 10 L/v0, then 1000 L/v_new
+    case("vstep-1e8", "v0 = 1e-10 -> 1e-2 m/s at t = 1e6 s, k = 2 kc, "
+         "steady start", 1e6 + 1, dynamic=True, k_over_kc=2,
+         Load_point_velocity=1e-10, Initial_slip_rate=1e-10,
+         Initial_state=math.log(1e-6 / 1e-10), Velocity_step_time=1e6,
+         Velocity_step_factor=1e8)
+    # very stiff and very soft spring
+    case("k=1e12", "k = 1e12 Pa/m (2000 kc)", 500, dynamic=True,
+         Stiffness=1e12)
+    case("k=1e-3kc", "k = 1e-3 kc = 5e5 Pa/m", 2e5, dynamic=True,
+         k_over_kc=1e-3)
+
+
+def write_prm(name, end, max_step, p):
+    d = os.path.join(WORK, name)
+    prm = os.path.join(WORK, name + ".prm")
+    entries = "\n".join(f"  set {k:<20} = {v:.15g}" if not isinstance(v, str)
+                        else f"  set {k:<20} = {v}" for k, v in p.items())
+    with open(prm, "w") as f:
+        f.write(f"""set Scene            = spring-slider
+set End time         = {end:.15g}
+set Output directory = {d}
+subsection Time stepping
+  set Adaptive     = true
+  set Tolerance    = 1e-5
+  set Initial step = 1e-3
+  set Minimum step = 1e-14
+  set Maximum step = {max_step:.15g}
+end
+subsection Solver
+  set State law                      = ageing
+  set Coupling                       = fixed-point
+  set Fixed-point tolerance          = 1e-5
+  set Maximum fixed-point iterations = 20
+end
+subsection Output
+  set Event threshold   = 10
+  set Progress interval = 1e9
+  set Checkpoint steps  = 0
+  set Checkpoint minutes = 0
+end
+subsection Spring slider
+  set Integrator           = step-doubling
+{entries}
+end
+""")
+    return prm, d
+
+
+def nonfinite(path):
+    """First non-finite (or unparsable) field of a CSV: 'no' or where."""
+    if not os.path.exists(path):
+        return "no file"
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    header = rows[0] if rows else []
+    for i, row in enumerate(rows[1:], start=2):
+        for j, x in enumerate(row):
+            bad = re.search(r"nan|inf", x, re.I)
+            try:
+                bad = bad or not math.isfinite(float(x))
+            except ValueError:
+                bad = True
+            if bad:
+                col = header[j] if j < len(header) else j
+                return f"yes: '{x}' in column '{col}', line {i}"
+    return "no"
+
+
+def run(name, what, end, max_step, p):
+    prm, d = write_prm(name, end, max_step, p)
+    t0 = time.monotonic()
+    try:
+        res = subprocess.run(["timeout", "-k", "10", str(TIMEOUT), EXE,
+                              "--force", prm], capture_output=True, text=True)
+        rc, out, err = res.returncode, res.stdout, res.stderr
+    except Exception as e:  # noqa
+        rc, out, err = -999, "", str(e)
+    wall = time.monotonic() - t0
+    if rc == 0 and "Final:" in out:
+        outcome = "finished"
+    elif rc == 124 or rc == 137:
+        outcome = f"timeout ({TIMEOUT} s)"
+    elif rc < 0 or rc > 128:
+        outcome = f"crashed (exit {rc})"
+    else:
+        lines = [l.strip() for l in (out + "\n" + err).splitlines()
+                 if re.match(r"(Error:|rsfcycle: error:)", l.strip())]
+        outcome = (f"stopped: {lines[0]}" if lines else
+                   f"stopped (exit {rc}, no diagnosis)")
+    ts = os.path.join(d, "time-series.csv")
+    steps, hmin, hmax, slip, vmax = 0, float("nan"), float("nan"), None, None
+    if os.path.exists(ts):
+        with open(ts) as f:
+            rows = list(csv.DictReader(f))
+        steps = len(rows)
+        hs = []
+        for r in rows:
+            try:
+                hs.append(float(r["step size"]))
+            except ValueError:
+                pass
+        if hs:
+            hmin, hmax = min(hs), max(hs)
+        if rows:
+            slip = rows[-1]["slip"]
+            vmax = max((float(r["slip rate"]) for r in rows),
+                       key=lambda v: (math.isfinite(v), abs(v)))
+    fp = re.search(r"max fixed-point iterations (\d+)", out)
+    fp = fp.group(1) if fp else "-"
+    m = re.search(r"Summary: (\d+) steps", out)
+    if m and int(m.group(1)) != steps:
+        outcome += f" (summary says {m.group(1)} steps)"
+    final = re.search(r"^Final:.*$", out, re.M)
+    other = []
+    ev = nonfinite(os.path.join(d, "events.csv"))
+    if ev.startswith("yes"):
+        other.append("events.csv " + ev)
+    if final and re.search(r"nan|inf", final.group(0), re.I):
+        other.append("Final line: " + final.group(0))
+    events = len(re.findall(r"event \d+ starts", out))
+    loop = re.search(r"Wall time of the time loop: (\S+) s", out)
+    loop = float(loop.group(1)) if loop else float("nan")
+    return dict(name=name, what=what, end=end, outcome=outcome, steps=steps,
+                hmin=hmin, hmax=hmax, wall=wall, loop=loop,
+                nonfinite=nonfinite(ts),
+                other="; ".join(other), events=events, fp=fp, slip=slip,
+                vmax=vmax,
+                final=final.group(0) if final else "")
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    matrix()
+    rows = []
+    for c in CASES:
+        if ONLY and c[0] not in ONLY:
+            continue
+        r = run(*c)
+        rows.append(r)
+        print(f"{r['name']:<20} {r['outcome'][:90]:<40} steps {r['steps']:>7}"
+              f" h {r['hmin']:.3g}..{r['hmax']:.3g} wall {r['wall']:.2f} s"
+              f" fp {r['fp']} events {r['events']} Vmax {r['vmax']} nonfinite "
+              f"{r['nonfinite']} {r['other']}", flush=True)
+    if ONLY:
+        return
+    with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "set-up", "end time [s]", "outcome", "steps",
+                    "min step [s]", "max step [s]", "wall time [s]",
+                    "time loop [s]", "max fixed-point iterations", "events",
+                    "max slip rate [m/s]", "final slip [m]",
+                    "non-finite in time-series.csv", "other non-finite"])
+        for r in rows:
+            w.writerow([r["name"], r["what"], f"{r['end']:g}", r["outcome"],
+                        r["steps"], f"{r['hmin']:.3g}", f"{r['hmax']:.3g}",
+                        f"{r['wall']:.2f}", f"{r['loop']:.3g}", r["fp"],
+                        r["events"],
+                        f"{r['vmax']:.3g}" if r["vmax"] is not None else "",
+                        r["slip"] or "", r["nonfinite"], r["other"]])
+    lines = ["| case | set-up | end time [s] | outcome | steps | "
+             "min step [s] | max step [s] | wall time [s] | time loop [s] | "
+             "max FP its | "
+             "events | "
+             "max V [m/s] | non-finite in time-series.csv |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        vm = f"{r['vmax']:.3g}" if r["vmax"] is not None else "-"
+        nf = r["nonfinite"] + (f" ({r['other']})" if r["other"] else "")
+        lines.append(f"| {r['name']} | {r['what']} | {r['end']:g} | "
+                     f"{r['outcome']} | {r['steps']} | {r['hmin']:.3g} | "
+                     f"{r['hmax']:.3g} | {r['wall']:.2f} | {r['loop']:.3g} | "
+                     f"{r['fp']} | "
+                     f"{r['events']} | "
+                     f"{vm} | {nf} |")
+    table = "\n".join(lines)
+    readme = os.path.join(HERE, "README.md")
+    if os.path.exists(readme):
+        text = open(readme).read()
+        begin, end = "<!-- table begin -->", "<!-- table end -->"
+        if begin in text and end in text:
+            text = (text[:text.index(begin) + len(begin)] + "\n" + table +
+                    "\n" + text[text.index(end):])
+            open(readme, "w").write(text)
+    print(table)
+
+
+if __name__ == "__main__":
+    main()

@@ -9,6 +9,12 @@ problems (sum of all_linear_iterations = TNNMG iterations with the direct
 correction), and the relative error of the recurrence time, peak slip rate
 and slip of every event (matched by index; the maximum over events) against
 the reference. Prints a Markdown table and writes wedge-fig7.png.
+
+       wedge.py --mesh RUNDIR [RUNDIR ...]   (runs that differ in the mesh;
+the finest is the reference): unknowns, wall time, steps, work, events, and
+the last event's recurrence time, peak slip rate, rupture width and slip
+with their relative differences to the finest mesh (the number of events by
+a given time differs between meshes, so events are not matched by index).
 """
 import csv
 import os
@@ -64,6 +70,39 @@ def max_rel_error(run, ref, key):
     return max(errors) if errors else float("nan")
 
 
+def unknowns(rundir):
+    with open(os.path.join(rundir, "log.txt")) as f:
+        for line in f:
+            m = re.search(r"Mesh: .* (\d+) unknowns", line)
+            if m:
+                return int(m.group(1))
+    return 0
+
+
+def mesh_series(dirs):
+    runs = []
+    for d in dirs:
+        r = read(d)
+        r["unknowns"] = unknowns(d)
+        runs.append(r)
+    runs.sort(key=lambda r: r["unknowns"])
+    ref = runs[-1]["events"][-1]
+    keys = ("recurrence_s", "peak_slip_rate_m_per_s", "rupture_width_m",
+            "slip_um")
+    print("| unknowns | wall [s] | steps | work (TNNMG its) | events | last "
+          "event: recurrence [s] | peak slip rate [m/s] | width [m] | "
+          "slip [um] | max rel. difference to the finest |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in runs:
+        e = r["events"][-1]
+        diff = max(abs(float(e[k]) - float(ref[k])) / abs(float(ref[k]))
+                   for k in keys)
+        print(f"| {r['unknowns']} | {r['wall']:.1f} | {r['steps']} | "
+              f"{r['work']} | {len(r['events'])} | "
+              + " | ".join(f"{float(e[k]):.4g}" for k in keys)
+              + f" | {diff:.1e} |")
+
+
 def main(dirs):
     runs = sorted((read(d) for d in dirs), key=lambda r: -r["eps"])
     ref = min(runs, key=lambda r: r["eps"])
@@ -100,4 +139,7 @@ def main(dirs):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:])
+    if sys.argv[1:2] == ["--mesh"]:
+        mesh_series(sys.argv[2:])
+    else:
+        main(sys.argv[1:])

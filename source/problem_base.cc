@@ -23,6 +23,7 @@
 #include <rsfcycle/ids.h>
 #include <rsfcycle/output/events.h>
 #include <rsfcycle/problem_base.h>
+#include <rsfcycle/time/rate_state_coupling.h>
 #include <rsfcycle/time/step_doubling.h>
 
 namespace rsfcycle
@@ -585,68 +586,69 @@ namespace rsfcycle
         }
     };
 
-    std::vector<double> alpha    = old.alpha, alpha_new(n_nodes);
-    const bool explicit_coupling = parameters.solver.coupling == "explicit";
-    if (explicit_coupling)
-      update_state(old.v, 0., alpha);
-
-    bool converged = false;
-    for (unsigned int k = 1; k <= parameters.solver.max_fixed_point_iterations;
-         ++k)
+    // The rate/state coupling (18) is the generic one of
+    // time/rate_state_coupling.h; the velocity solve is TNNMG.
+    std::vector<double> alpha = old.alpha;
+    unsigned int        k     = 0;
+    double              d     = 0;
+    std::string         failure;
+    const auto          solve_velocity = [&](const std::vector<double> &alpha_k,
+                                    Vector<double>            &v) {
+      ++k;
+      for (unsigned int i = 0; i < n_nodes; ++i)
+        potentials[i].alpha = alpha_k[i];
+      const solvers::TNNMGStatistics stats = tnnmg->solve(problem, v);
+      next.statistics.fixed_point_iterations = k;
+      next.statistics.tnnmg_iterations += stats.iterations;
+      next.statistics.linear_iterations += stats.linear_iterations;
+      work.tnnmg_iterations += stats.iterations;
+      work.linear_iterations += stats.linear_iterations;
+      if (!stats.converged)
+        {
+          std::ostringstream why;
+          why << "t = " << t + tau << " s, step " << tau << " s: TNNMG "
+              << (std::isfinite(stats.relative_change) ?
+                             "did not converge (relative change " :
+                             "produced non-finite values (relative change ")
+              << stats.relative_change << " after " << stats.iterations
+              << " iterations) in fixed-point iteration " << k << "; "
+              << first_non_finite(v);
+          failure = why.str();
+        }
+      return stats.converged;
+    };
+    const auto coupled = time::couple_rate_and_state(
+      parameters.solver.coupling == "explicit" ?
+        time::Coupling::explicit_decoupling :
+        time::Coupling::fixed_point,
+      parameters.solver.fixed_point_tolerance,
+      parameters.solver.max_fixed_point_iterations,
+      old.v,
+      next.v,
+      alpha,
+      solve_velocity,
+      update_state,
+      [this](const std::vector<double> &a1, const std::vector<double> &a2) {
+        return state_distance(a1, a2);
+      },
+      &d);
+    if (!coupled)
       {
-        for (unsigned int i = 0; i < n_nodes; ++i)
-          potentials[i].alpha = alpha[i];
-        const solvers::TNNMGStatistics stats   = tnnmg->solve(problem, next.v);
-        next.statistics.fixed_point_iterations = k;
-        next.statistics.tnnmg_iterations += stats.iterations;
-        next.statistics.linear_iterations += stats.linear_iterations;
-        work.tnnmg_iterations += stats.iterations;
-        work.linear_iterations += stats.linear_iterations;
-        if (!stats.converged)
+        if (failure.empty())
           {
             std::ostringstream why;
-            why << "t = " << t + tau << " s, step " << tau << " s: TNNMG "
-                << (std::isfinite(stats.relative_change) ?
-                      "did not converge (relative change " :
-                      "produced non-finite values (relative change ")
-                << stats.relative_change << " after " << stats.iterations
-                << " iterations) in fixed-point iteration " << k << "; "
-                << first_non_finite(next.v);
-            last_failure = why.str();
-            return {};
+            why << "t = " << t + tau << " s, step " << tau << " s: ";
+            if (!std::isfinite(d))
+              why << "non-finite state distance; " << first_non_finite(next.v);
+            else
+              why << "the fixed-point iteration did not converge in " << k
+                  << " iterations (state distance " << d
+                  << " > Fixed-point tolerance)";
+            failure = why.str();
           }
-        if (explicit_coupling)
-          {
-            converged = true;
-            break;
-          }
-        update_state(next.v, 0.5, alpha_new);
-        const double d = state_distance(alpha_new, alpha);
-        alpha.swap(alpha_new);
-        if (!std::isfinite(d))
-          {
-            last_failure = "t = " + std::to_string(t + tau) +
-                           " s: non-finite state distance; " +
-                           first_non_finite(next.v);
-            return {};
-          }
-        if (d <= parameters.solver.fixed_point_tolerance)
-          {
-            converged = true;
-            break;
-          }
-        if (k == parameters.solver.max_fixed_point_iterations)
-          {
-            std::ostringstream why;
-            why << "t = " << t + tau << " s, step " << tau
-                << " s: the fixed-point iteration did not converge in " << k
-                << " iterations (state distance " << d
-                << " > Fixed-point tolerance)";
-            last_failure = why.str();
-          }
+        last_failure = failure;
+        return {};
       }
-    if (!converged)
-      return {};
 
     hanging_constraints.distribute(next.v);
     next.alpha = alpha;

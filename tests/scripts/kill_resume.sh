@@ -27,16 +27,21 @@ end
 PRM
 }
 fail() { echo "FAILED: $*"; exit 1; }
+# start run $1 in the background (pid in $pid) and wait until it has
+# written a checkpoint and 120 rows
+start_and_wait() {
+  "$exe" "$1.prm" > "$1.log" 2>&1 &
+  pid=$!
+  for i in $(seq 1 600); do
+    [ -f "$1/checkpoint.bin" ] && [ "$(wc -l < "$1/time-series.csv")" -gt 120 ] && break
+    sleep 0.05
+  done
+}
 for r in a b c; do make_prm $r; done
 
 "$exe" a.prm > a.log 2>&1 || fail "uninterrupted run"
 
-"$exe" b.prm > b.log 2>&1 &
-pid=$!
-for i in $(seq 1 600); do
-  [ -f b/checkpoint.bin ] && [ "$(wc -l < b/time-series.csv)" -gt 120 ] && break
-  sleep 0.05
-done
+start_and_wait b
 kill -9 $pid 2>/dev/null || fail "run b ended before it could be killed"
 wait $pid 2>/dev/null
 lines_killed=$(wc -l < b/time-series.csv)
@@ -46,12 +51,7 @@ for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
 done
 echo "SIGKILL at $lines_killed rows of time-series.csv, resumed: identical"
 
-"$exe" c.prm > c.log 2>&1 &
-pid=$!
-for i in $(seq 1 600); do
-  [ -f c/checkpoint.bin ] && [ "$(wc -l < c/time-series.csv)" -gt 120 ] && break
-  sleep 0.05
-done
+start_and_wait c
 kill -INT $pid 2>/dev/null || fail "run c ended before SIGINT"
 wait $pid; status=$?
 [ $status -eq 130 ] || fail "SIGINT exit status $status, expected 130"

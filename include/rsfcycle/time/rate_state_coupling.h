@@ -39,7 +39,8 @@ namespace rsfcycle
      * of velocity solves (fixed-point iterations) is returned; on failure
      * (a failed velocity solve, a non-finite distance, or no convergence
      * within max_iterations) nothing is returned, and the caller rejects the
-     * step.
+     * step. If `last_distance` is given, it receives the distance of the
+     * last fixed-point iteration (for diagnoses).
      */
     template <typename Velocity,
               typename StateVector,
@@ -55,7 +56,8 @@ namespace rsfcycle
                           StateVector       &alpha,
                           SolveVelocity    &&solve_velocity,
                           UpdateState      &&update_state,
-                          Distance         &&distance)
+                          Distance         &&distance,
+                          double            *last_distance = nullptr)
     {
       if (coupling == Coupling::explicit_decoupling)
         {
@@ -72,6 +74,8 @@ namespace rsfcycle
             return {};
           update_state(v, 0.5, alpha_new);
           const double d = distance(alpha_new, alpha);
+          if (last_distance != nullptr)
+            *last_distance = d;
           std::swap(alpha, alpha_new);
           if (!std::isfinite(d))
             return {};

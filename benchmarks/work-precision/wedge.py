@@ -1,5 +1,6 @@
 #!/usr/bin/python3
 """Work against precision for the 2D wedge (the paper's figure 7, extended).
+Plots: wedge-fig7.png (or $WEDGE_PLOT), wedge-mesh.png.
 
 Usage: wedge.py RUNDIR [RUNDIR ...]   (run folders of rsfcycle that differ
 only in the fixed-point tolerance; the one with the smallest tolerance is the
@@ -53,6 +54,7 @@ def read(rundir):
     return {
         "dir": rundir,
         "eps": prm_value(rundir, "Fixed-point tolerance"),
+        "delta": prm_value(rundir, "Tolerance"),
         "wall": wall_time(rundir),
         "steps": len(rows),
         "problems": sum(int(r["spatial_problems"]) for r in rows),
@@ -101,16 +103,34 @@ def mesh_series(dirs):
               f"{r['work']} | {len(r['events'])} | "
               + " | ".join(f"{float(e[k]):.4g}" for k in keys)
               + f" | {diff:.1e} |")
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    n = [r["unknowns"] for r in runs]
+    ax[0].loglog(n, [r["work"] for r in runs], "o-", label="TNNMG iterations")
+    ax[0].loglog(n, [r["wall"] for r in runs], "s-", label="wall time [s]")
+    ax[0].set_xlabel("unknowns")
+    ax[0].set_title("work over 0 - 600 s")
+    ax[0].legend()
+    for k, label in zip(keys, ("recurrence", "peak slip rate", "width",
+                               "slip")):
+        ax[1].semilogx(n, [float(r["events"][-1][k]) / float(ref[k])
+                           for r in runs], "o-", label=label)
+    ax[1].set_xlabel("unknowns")
+    ax[1].set_ylabel("last event, relative to the finest mesh")
+    ax[1].legend()
+    fig.tight_layout()
+    fig.savefig("wedge-mesh.png", dpi=120)
+    print("wrote wedge-mesh.png")
 
 
 def main(dirs):
     runs = sorted((read(d) for d in dirs), key=lambda r: -r["eps"])
     ref = min(runs, key=lambda r: r["eps"])
-    print("| ε | wall [s] | steps | spatial problems | work (TNNMG its) | events "
-          "| max rel. error recurrence | peak slip rate | slip |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| ε | δ | wall [s] | steps | spatial problems | work (TNNMG its) "
+          "| events | max rel. error recurrence | peak slip rate | slip |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for r in runs:
-        cells = [f"{r['eps']:g}", f"{r['wall']:.1f}", str(r["steps"]),
+        cells = [f"{r['eps']:g}", f"{r['delta']:g}", f"{r['wall']:.1f}",
+                 str(r["steps"]),
                  str(r["problems"]), str(r["work"]), str(len(r["events"]))]
         if r is ref:
             cells += ["reference"] * 3
@@ -135,7 +155,9 @@ def main(dirs):
     ax[1].set_ylabel(f"max relative error vs ε = {ref['eps']:g}")
     ax[1].legend()
     fig.tight_layout()
-    fig.savefig("wedge-fig7.png", dpi=120)
+    name = os.environ.get("WEDGE_PLOT", "wedge-fig7.png")
+    fig.savefig(name, dpi=120)
+    print(f"wrote {name}")
 
 
 if __name__ == "__main__":

@@ -26,8 +26,8 @@ namespace rsfcycle
   /** Subsection "Mesh": refinement toward the seismogenic patch. */
   struct MeshParameters
   {
-    unsigned int global_refinements  = 2;
-    unsigned int local_refinements   = 5;
+    unsigned int global_refinements  = 3;
+    unsigned int local_refinements   = 4;
     double       refinement_distance = 1.5;
 
     static void

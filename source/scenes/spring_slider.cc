@@ -15,6 +15,25 @@ namespace rsfcycle
 {
   namespace scenes
   {
+    namespace
+    {
+      /** The last lines of a spring-slider run, the same for both integrators.
+       */
+      void
+      print_final(std::ostream &log, const SpringSlider::Summary &summary)
+      {
+        log << "Final: slip = " << std::setprecision(16)
+            << summary.final_state.slip
+            << " m, V = " << summary.final_state.velocity
+            << " m/s, alpha = " << summary.final_state.alpha
+            << ", mu = " << summary.final_friction
+            << ", mean recurrence time = " << summary.mean_recurrence_time
+            << " s" << std::endl;
+        log << "Wall time of the time loop: " << std::setprecision(4)
+            << summary.wall_time << " s" << std::endl;
+      }
+    } // namespace
+
     using dealii::Patterns::Anything;
     using dealii::Patterns::Double;
     using dealii::Patterns::Selection;
@@ -492,13 +511,7 @@ namespace rsfcycle
           << summary.events.size() << " events, step size " << summary.min_step
           << " s to " << summary.max_step << " s, max fixed-point iterations "
           << summary.max_fixed_point << std::endl;
-      log << "Final: slip = " << std::setprecision(16) << state.slip
-          << " m, V = " << state.velocity << " m/s, alpha = " << state.alpha
-          << ", mu = " << summary.final_friction
-          << ", mean recurrence time = " << summary.mean_recurrence_time << " s"
-          << std::endl;
-      log << "Wall time of the time loop: " << std::setprecision(4)
-          << summary.wall_time << " s" << std::endl;
+      print_final(log, summary);
       return summary;
     }
 
@@ -688,15 +701,7 @@ namespace rsfcycle
       log << "Summary: " << steps << " ARKODE steps, " << summary.steps
           << " output samples, " << summary.events.size() << " events"
           << std::endl;
-      log << "Final: slip = " << std::setprecision(16)
-          << summary.final_state.slip
-          << " m, V = " << summary.final_state.velocity
-          << " m/s, alpha = " << summary.final_state.alpha
-          << ", mu = " << summary.final_friction
-          << ", mean recurrence time = " << summary.mean_recurrence_time << " s"
-          << std::endl;
-      log << "Wall time of the time loop: " << std::setprecision(4)
-          << summary.wall_time << " s" << std::endl;
+      print_final(log, summary);
       return summary;
     }
   } // namespace scenes

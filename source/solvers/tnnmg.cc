@@ -323,9 +323,13 @@ namespace rsfcycle
           interior.clear();
           contact_dofs.clear();
           interior_index.assign(n, -1);
+          contact_index.assign(n, -1);
           for (global_dof_index i = 0; i < n; ++i)
             if (contact.dof_to_node[i] >= 0)
-              contact_dofs.push_back(i);
+              {
+                contact_index[i] = contact_dofs.size();
+                contact_dofs.push_back(i);
+              }
             else if (!(*system.truncated)[i])
               {
                 interior_index[i] = interior.size();
@@ -358,9 +362,6 @@ namespace rsfcycle
 
       const unsigned int n_c = contact_dofs.size();
       f->schur.reinit(n_c, n_c);
-      std::vector<int> contact_index(n, -1);
-      for (unsigned int j = 0; j < n_c; ++j)
-        contact_index[contact_dofs[j]] = j;
       // A symmetric: column j of A_Ic is row contact_dofs[j] restricted to I.
       dealii::FullMatrix<double> A_Ic(n_I, n_c);
       for (unsigned int j = 0; j < n_c; ++j)
@@ -401,7 +402,7 @@ namespace rsfcycle
       const unsigned int n_a = active.size();
 
       // y = A_II^{-1} b_I
-      Vector<double> b_I(n_I), y(n_I);
+      b_I.reinit(n_I, true);
       for (unsigned int k = 0; k < n_I; ++k)
         b_I[k] = rhs[interior[k]];
       f.lu.solve(b_I, y);
@@ -409,44 +410,38 @@ namespace rsfcycle
       c = 0;
       if (n_a > 0)
         {
-          // (S_aa + H_aa) x_a = b_a - A_aI y
-          dealii::FullMatrix<double> S(n_a, n_a);
-          Vector<double>             b_a(n_a), x_a(n_a);
-          std::vector<int>           active_index(contact_dofs.size(), -1);
-          for (unsigned int p = 0; p < n_a; ++p)
-            active_index[active[p]] = p;
+          // (S_aa + H_aa) x_a = b_a - A_aI y, with S_aa + H_aa formed
+          // directly in the LAPACK matrix (n_a is small: contact dofs only)
+          dealii::LAPACKFullMatrix<double> S(n_a, n_a);
+          Vector<double>                   x_a(n_a);
+          std::vector<int> active_position(contact_dofs.size(), -1);
           for (unsigned int p = 0; p < n_a; ++p)
             {
+              active_position[active[p]] = p;
               const global_dof_index row = contact_dofs[active[p]];
-              b_a[p]                     = rhs[row];
+              x_a[p]                     = rhs[row];
               for (auto it = A.begin(row); it != A.end(row); ++it)
                 if (interior_index[it->column()] >= 0)
-                  b_a[p] -= it->value() * y[interior_index[it->column()]];
+                  x_a[p] -= it->value() * y[interior_index[it->column()]];
               for (unsigned int q = 0; q < n_a; ++q)
                 S(p, q) = f.schur(active[p], active[q]);
             }
           // Hessian blocks of the active nodes.
-          std::vector<int> position(A.m(), -1);
-          for (unsigned int p = 0; p < n_a; ++p)
-            position[contact_dofs[active[p]]] = p;
           for (unsigned int k = 0; k < contact.nodes.size(); ++k)
             {
               const ContactNode &node = contact.nodes[k];
               for (unsigned int i = 0; i < node.n_dofs; ++i)
                 for (unsigned int j = 0; j < node.n_dofs; ++j)
                   {
-                    const int pi = position[node.dofs[i]],
-                              pj = position[node.dofs[j]];
+                    const int pi = active_position[contact_index[node.dofs[i]]],
+                              pj = active_position[contact_index[node.dofs[j]]];
                     if (pi >= 0 && pj >= 0)
                       S(pi, pj) +=
                         (*system.node_hessians)[k][node.n_dofs * i + j];
                   }
             }
-          dealii::LAPACKFullMatrix<double> S_lapack(n_a, n_a);
-          S_lapack = S;
-          S_lapack.compute_lu_factorization();
-          x_a = b_a;
-          S_lapack.solve(x_a);
+          S.compute_lu_factorization();
+          S.solve(x_a);
           for (unsigned int p = 0; p < n_a; ++p)
             c[contact_dofs[active[p]]] = x_a[p];
 

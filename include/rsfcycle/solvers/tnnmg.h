@@ -107,7 +107,9 @@ namespace rsfcycle
 
       std::vector<std::unique_ptr<Factorization>> cache;
       std::vector<global_dof_index>               interior, contact_dofs;
-      std::vector<int>                            interior_index;
+      std::vector<int> interior_index; // dof -> index in interior, or -1
+      std::vector<int> contact_index;  // dof -> index in contact_dofs, or -1
+      dealii::Vector<double> b_I, y;   // work vectors of solve()
     };
 
     /** The names accepted for `Linear correction`. */

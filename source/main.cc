@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <fstream>
@@ -163,6 +164,8 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // Trilinos (the amg correction) needs MPI; one process, one thread.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
       dealii::ParameterHandler prm;

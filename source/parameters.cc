@@ -150,9 +150,28 @@ namespace rsfcycle
                       "A step whose fixed point needs more is rejected and "
                       "halved");
     prm.declare_entry("Linear correction",
-                      "direct",
-                      Selection("direct"),
-                      "Linear correction of TNNMG: direct (UMFPACK)");
+                      "multigrid",
+                      Selection("multigrid|direct|amg"),
+                      "Linear correction of TNNMG: geometric multigrid on the "
+                      "mesh levels (preconditioning CG on the truncated "
+                      "system), direct (sparse Cholesky with a Schur "
+                      "complement on the contact), or amg (Trilinos ML, "
+                      "preconditioning CG)");
+    prm.declare_entry("Multigrid smoothing steps",
+                      "3",
+                      Integer(1, 100),
+                      "Gauss-Seidel sweeps before and after the coarse "
+                      "correction of the V-cycle (nu1 = nu2)");
+    prm.declare_entry("Linear correction cycles",
+                      "5",
+                      Integer(1, 1000),
+                      "Multigrid (or AMG) cycles per linear correction at "
+                      "most, each one CG iteration");
+    prm.declare_entry("Linear correction tolerance",
+                      "1e-2",
+                      Double(0, 1),
+                      "A linear correction stops early when the residual of "
+                      "the truncated Newton system fell by this factor [-]");
     prm.declare_entry("TNNMG tolerance",
                       "1e-10",
                       Double(1e-300, 1),
@@ -181,6 +200,9 @@ namespace rsfcycle
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");
     linear_correction    = prm.get("Linear correction");
+    smoothing_steps      = prm.get_integer("Multigrid smoothing steps");
+    correction_cycles    = prm.get_integer("Linear correction cycles");
+    correction_tolerance = prm.get_double("Linear correction tolerance");
     tnnmg_tolerance      = prm.get_double("TNNMG tolerance");
     max_tnnmg_iterations = prm.get_integer("Maximum TNNMG iterations");
     truncation_ratio     = prm.get_double("Truncation ratio");

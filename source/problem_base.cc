@@ -23,6 +23,8 @@
 #include <rsfcycle/ids.h>
 #include <rsfcycle/output/events.h>
 #include <rsfcycle/problem_base.h>
+#include <rsfcycle/solvers/amg_correction.h>
+#include <rsfcycle/solvers/multigrid_correction.h>
 #include <rsfcycle/time/rate_state_coupling.h>
 #include <rsfcycle/time/step_doubling.h>
 
@@ -42,19 +44,7 @@ namespace rsfcycle
     , scalar_fe(1)
     , scalar_dof_handler(tria)
     , state_law(friction::state_law_from_name(parameters.solver.state_law))
-  {
-    if (parameters.solver.linear_correction == "direct")
-      linear_correction = std::make_unique<solvers::DirectCorrection>();
-    else
-      throw std::invalid_argument(
-        "Solver/Linear correction = " + parameters.solver.linear_correction +
-        ": allowed are " + solvers::linear_correction_names());
-    solvers::TNNMGControl control;
-    control.tolerance        = parameters.solver.tnnmg_tolerance;
-    control.max_iterations   = parameters.solver.max_tnnmg_iterations;
-    control.truncation_ratio = parameters.solver.truncation_ratio;
-    tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction, control);
-  }
+  {}
 
 
   template <int dim>
@@ -96,6 +86,7 @@ namespace rsfcycle
   ProblemBase<dim>::setup_system()
   {
     dof_handler.distribute_dofs(fe);
+    dof_handler.distribute_mg_dofs();
     scalar_dof_handler.distribute_dofs(scalar_fe);
 
     hanging_constraints.clear();
@@ -122,80 +113,204 @@ namespace rsfcycle
   /**
    * Mass M (density), viscosity C (Kelvin-Voigt, shear and bulk viscosity)
    * and stiffness K (bulk modulus, Poisson ratio) matrices and the gravity
-   * load, all independent of the step size; hanging nodes condensed.
+   * load of one cell, active or on a multigrid level (the material is found
+   * from the cell centre, so non-active cells get theirs too).
    * A stress of "the same form" is lambda tr(e) I + 2 mu e with
    * lambda = bulk - 2/3 shear.
    */
   template <int dim>
+  template <class Iterator>
   void
-  ProblemBase<dim>::assemble_matrices()
+  ProblemBase<dim>::cell_matrices(const Iterator                    &cell,
+                                  FEValues<dim>                     &fe_values,
+                                  std::array<FullMatrix<double>, 3> &matrices,
+                                  Vector<double> &cell_force) const
   {
     const auto [bulk_modulus, nu] = scene.elastic_moduli();
     const double shear_modulus =
       3. * bulk_modulus * (1. - 2. * nu) / (2. * (1. + nu));
-    const double         lambda  = bulk_modulus - 2. / 3. * shear_modulus;
-    const Tensor<1, dim> gravity = scene.gravity();
+    const double           lambda  = bulk_modulus - 2. / 3. * shear_modulus;
+    const Tensor<1, dim>   gravity = scene.gravity();
+    const scenes::Material material =
+      scene.material(scene.material_id(cell->center()));
+    const double eta_lambda =
+      material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
+    const FEValuesExtractors::Vector displacement(0);
 
+    fe_values.reinit(cell);
+    for (auto &matrix : matrices)
+      matrix = 0;
+    cell_force                                        = 0;
+    auto &[cell_mass, cell_viscosity, cell_stiffness] = matrices;
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double JxW = fe_values.JxW(q);
+        for (const unsigned int i : fe_values.dof_indices())
+          {
+            const Tensor<1, dim> phi_i = fe_values[displacement].value(i, q);
+            const SymmetricTensor<2, dim> eps_i =
+              fe_values[displacement].symmetric_gradient(i, q);
+            const double div_i = trace(eps_i);
+            for (const unsigned int j : fe_values.dof_indices())
+              {
+                const SymmetricTensor<2, dim> eps_j =
+                  fe_values[displacement].symmetric_gradient(j, q);
+                const double div_j   = trace(eps_j);
+                const double eps_eps = eps_i * eps_j;
+                cell_mass(i, j) += material.density * phi_i *
+                                   fe_values[displacement].value(j, q) * JxW;
+                cell_stiffness(i, j) +=
+                  (lambda * div_i * div_j + 2. * shear_modulus * eps_eps) * JxW;
+                cell_viscosity(i, j) +=
+                  (eta_lambda * div_i * div_j +
+                   2. * material.shear_viscosity * eps_eps) *
+                  JxW;
+              }
+            cell_force(i) += material.density * gravity * phi_i * JxW;
+          }
+      }
+  }
+
+
+  /** M, C, K and the gravity load, with hanging nodes condensed. */
+  template <int dim>
+  void
+  ProblemBase<dim>::assemble_matrices()
+  {
     const QGauss<dim> quadrature(fe.degree + 1);
     FEValues<dim>     fe_values(
       fe, quadrature, update_values | update_gradients | update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_mass(n, n), cell_viscosity(n, n),
-      cell_stiffness(n, n);
+    const unsigned int                n = fe.n_dofs_per_cell();
+    std::array<FullMatrix<double>, 3> cell{
+      {FullMatrix<double>(n), FullMatrix<double>(n), FullMatrix<double>(n)}};
     Vector<double>                       cell_force(n);
     std::vector<types::global_dof_index> dof_indices(n);
-    const FEValuesExtractors::Vector     displacement(0);
 
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &active_cell : dof_handler.active_cell_iterators())
       {
-        fe_values.reinit(cell);
-        const scenes::Material material = scene.material(cell->material_id());
-        const double           eta_lambda =
-          material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
-        cell_mass      = 0;
-        cell_viscosity = 0;
-        cell_stiffness = 0;
-        cell_force     = 0;
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const double JxW = fe_values.JxW(q);
-            for (const unsigned int i : fe_values.dof_indices())
-              {
-                const Tensor<1, dim> phi_i =
-                  fe_values[displacement].value(i, q);
-                const SymmetricTensor<2, dim> eps_i =
-                  fe_values[displacement].symmetric_gradient(i, q);
-                const double div_i = trace(eps_i);
-                for (const unsigned int j : fe_values.dof_indices())
-                  {
-                    const SymmetricTensor<2, dim> eps_j =
-                      fe_values[displacement].symmetric_gradient(j, q);
-                    const double div_j   = trace(eps_j);
-                    const double eps_eps = eps_i * eps_j;
-                    cell_mass(i, j) += material.density * phi_i *
-                                       fe_values[displacement].value(j, q) *
-                                       JxW;
-                    cell_stiffness(i, j) +=
-                      (lambda * div_i * div_j + 2. * shear_modulus * eps_eps) *
-                      JxW;
-                    cell_viscosity(i, j) +=
-                      (eta_lambda * div_i * div_j +
-                       2. * material.shear_viscosity * eps_eps) *
-                      JxW;
-                  }
-                cell_force(i) += material.density * gravity * phi_i * JxW;
-              }
-          }
-        cell->get_dof_indices(dof_indices);
+        cell_matrices(active_cell, fe_values, cell, cell_force);
+        active_cell->get_dof_indices(dof_indices);
         hanging_constraints.distribute_local_to_global(
-          cell_mass, cell_force, dof_indices, mass_matrix, body_force);
-        hanging_constraints.distribute_local_to_global(cell_viscosity,
+          cell[0], cell_force, dof_indices, mass_matrix, body_force);
+        hanging_constraints.distribute_local_to_global(cell[1],
                                                        dof_indices,
                                                        viscosity_matrix);
-        hanging_constraints.distribute_local_to_global(cell_stiffness,
+        hanging_constraints.distribute_local_to_global(cell[2],
                                                        dof_indices,
                                                        stiffness_matrix);
       }
+  }
+
+
+  /**
+   * The linear correction named in the parameters. Geometric multigrid
+   * gets the level matrices from cell_matrices() and the lumped contact
+   * weights of the active mesh.
+   */
+  template <int dim>
+  void
+  ProblemBase<dim>::setup_linear_correction()
+  {
+    const auto                      &solver = parameters.solver;
+    solvers::LinearCorrectionControl control;
+    control.max_cycles = solver.correction_cycles;
+    control.tolerance  = solver.correction_tolerance;
+    if (solver.linear_correction == "direct")
+      linear_correction = std::make_unique<solvers::DirectCorrection>();
+    else if (solver.linear_correction == "amg")
+      {
+        std::vector<unsigned int>            component(dof_handler.n_dofs());
+        std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              component[indices[i]] = fe.system_to_component_index(i).first;
+          }
+        linear_correction =
+          std::make_unique<solvers::AMGCorrection>(control, component);
+      }
+    else if (solver.linear_correction == "multigrid")
+      {
+        using MG = solvers::MultigridCorrection<dim>;
+        std::vector<typename MG::DirichletBoundary> dirichlet = {
+          {boundary_id::backstop, ComponentMask(dim, true)}};
+        {
+          std::vector<bool> normal(dim, false);
+          normal[1] = true;
+          dirichlet.push_back({boundary_id::contact, ComponentMask(normal)});
+        }
+        if (dim == 3)
+          {
+            std::vector<bool> lateral(dim, false);
+            lateral[dim - 1] = true;
+            dirichlet.push_back({boundary_id::lateral, ComponentMask(lateral)});
+          }
+
+        // Contact node -> vertex and components.
+        std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
+          vertex_of_dof;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == boundary_id::contact)
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                for (unsigned int c = 0; c < dim; ++c)
+                  vertex_of_dof[cell->face(f)->vertex_dof_index(v, c)] = {
+                    cell->face(f)->vertex_index(v), c};
+        std::vector<typename MG::ContactVertex> vertices(contact.nodes.size());
+        for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+          {
+            const auto &node         = contact.nodes[k];
+            vertices[k].vertex       = vertex_of_dof.at(node.dofs[0]).first;
+            vertices[k].weight       = node_info[k].weight;
+            vertices[k].n_components = node.n_dofs;
+            for (unsigned int l = 0; l < node.n_dofs; ++l)
+              vertices[k].components[l] = vertex_of_dof.at(node.dofs[l]).second;
+          }
+
+        const QGauss<dim> quadrature(fe.degree + 1);
+        auto              fe_values = std::make_shared<FEValues<dim>>(
+          fe, quadrature, update_values | update_gradients | update_JxW_values);
+        auto force = std::make_shared<Vector<double>>(fe.n_dofs_per_cell());
+        const auto level_cell_matrices =
+          [this,
+           fe_values,
+           force](const typename MG::LevelCellIterator &cell,
+                  std::array<FullMatrix<double>, 3>    &matrices) {
+            cell_matrices(cell, *fe_values, matrices, *force);
+          };
+        const bool dynamic      = solver.dynamics == "dynamic";
+        const auto coefficients = [dynamic](const double tau) {
+          return std::array<double, 3>{{dynamic ? 2. / tau : 0., 1., tau / 2}};
+        };
+        typename MG::Settings settings;
+        settings.smoothing_steps = solver.smoothing_steps;
+        settings.control         = control;
+        auto mg                  = std::make_unique<MG>(dof_handler,
+                                       dirichlet,
+                                       boundary_id::contact,
+                                       vertices,
+                                       level_cell_matrices,
+                                       coefficients,
+                                       settings);
+        log << "Multigrid: " << mg->level_sizes().size()
+            << " levels, dofs per level:";
+        for (const auto n : mg->level_sizes())
+          log << ' ' << n;
+        log << std::endl;
+        linear_correction = std::move(mg);
+      }
+    else
+      throw std::invalid_argument(
+        "Solver/Linear correction = " + solver.linear_correction +
+        ": allowed are " + solvers::linear_correction_names());
+
+    solvers::TNNMGControl tnnmg_control;
+    tnnmg_control.tolerance        = solver.tnnmg_tolerance;
+    tnnmg_control.max_iterations   = solver.max_tnnmg_iterations;
+    tnnmg_control.truncation_ratio = solver.truncation_ratio;
+    tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction, tnnmg_control);
   }
 
 
@@ -398,6 +513,10 @@ namespace rsfcycle
     {
       TimerOutput::Scope scope(timer, "Normal stress");
       compute_initial_state();
+    }
+    {
+      TimerOutput::Scope scope(timer, "Linear correction setup");
+      setup_linear_correction();
     }
 
     // Observation points: u . vertical as a weighted sum of dofs.

@@ -59,7 +59,10 @@ namespace rsfcycle
     std::string  dynamics                   = "dynamic";
     double       fixed_point_tolerance      = 1e-5;
     unsigned int max_fixed_point_iterations = 20;
-    std::string  linear_correction          = "direct";
+    std::string  linear_correction          = "multigrid";
+    unsigned int smoothing_steps            = 3;
+    unsigned int correction_cycles          = 5;
+    double       correction_tolerance       = 1e-2;
     double       tnnmg_tolerance            = 1e-10;
     unsigned int max_tnnmg_iterations       = 100;
     double       truncation_ratio           = 1e10;

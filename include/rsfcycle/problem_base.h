@@ -5,8 +5,10 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -201,6 +203,14 @@ namespace rsfcycle
     setup_system();
     void
     assemble_matrices();
+    template <class Iterator>
+    void
+    cell_matrices(const Iterator                    &cell,
+                  FEValues<dim>                     &fe_values,
+                  std::array<FullMatrix<double>, 3> &matrices,
+                  Vector<double>                    &cell_force) const;
+    void
+    setup_linear_correction();
     void
     setup_contact();
     void

@@ -463,7 +463,7 @@ namespace rsfcycle
     std::string
     linear_correction_names()
     {
-      return "direct";
+      return "multigrid|direct|amg";
     }
   } // namespace solvers
 } // namespace rsfcycle

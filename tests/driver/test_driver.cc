@@ -9,6 +9,7 @@
 // count, recurrence time, slip per cycle / (v0 T), peak log10(V/v0), final
 // state against steady sliding), see run_spring_slider().
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <fstream>
 #include <iomanip>
@@ -189,6 +190,8 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // Trilinos (the amg correction) needs MPI; one process, one thread.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
       if (argc != 2)

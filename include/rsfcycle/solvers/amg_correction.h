@@ -1,0 +1,53 @@
+#ifndef rsfcycle_solvers_amg_correction_h
+#define rsfcycle_solvers_amg_correction_h
+
+#include <memory>
+#include <rsfcycle/solvers/projected_cg.h>
+#include <rsfcycle/solvers/spatial_problem.h>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    /**
+     * Algebraic multigrid (Trilinos ML) as the linear correction, for
+     * comparison and as a fall-back: one AMG hierarchy per step matrix
+     * (cached by matrix_key; the fixed rows and columns decoupled), whose
+     * contact blocks get the friction Hessian and the truncation of every
+     * TNNMG iteration (then the hierarchy is recomputed on the aggregates
+     * of its first setup), used as preconditioner of CG on the truncated
+     * system (ProjectedCG).
+     */
+    class AMGCorrection : public LinearCorrection
+    {
+    public:
+      /**
+       * component_of_dof: the vector component of every dof (the
+       * translations are AMG's near-null space).
+       */
+      AMGCorrection(const LinearCorrectionControl   &control,
+                    const std::vector<unsigned int> &component_of_dof);
+      ~AMGCorrection() override;
+
+      unsigned int
+      solve(const TruncatedNewtonSystem  &system,
+            const dealii::Vector<double> &rhs,
+            dealii::Vector<double>       &correction) override;
+
+    private:
+      struct Hierarchy;
+      Hierarchy &
+      hierarchy(const TruncatedNewtonSystem &system);
+      void
+      update(Hierarchy &h, const TruncatedNewtonSystem &system);
+
+      LinearCorrectionControl                 control;
+      std::vector<unsigned int>               component_of_dof;
+      std::vector<std::unique_ptr<Hierarchy>> cache;
+      ProjectedCG                             cg;
+    };
+  } // namespace solvers
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,154 @@
+#ifndef rsfcycle_solvers_multigrid_correction_h
+#define rsfcycle_solvers_multigrid_correction_h
+
+#include <array>
+#include <deal.II/base/mg_level_object.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/multigrid/mg_constrained_dofs.h>
+#include <deal.II/multigrid/mg_transfer.h>
+#include <functional>
+#include <memory>
+#include <rsfcycle/solvers/projected_cg.h>
+#include <rsfcycle/solvers/spatial_problem.h>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    /**
+     * The geometric multigrid linear correction of TNNMG (MODEL.md §4.2
+     * step 3) on the levels of the locally refined mesh (local smoothing as
+     * in deal.II's step-16: MGTransferPrebuilt, MGConstrainedDoFs, edge
+     * matrices at refinement edges).
+     *
+     * Level operators. The level mass, viscosity and stiffness matrices are
+     * assembled once per mesh; for each step matrix (matrix_key) the level
+     * step matrices are their linear combination (cached for a few keys, no
+     * reassembly). Per TNNMG iteration only the diagonal blocks of the
+     * contact vertices change on every level where the vertex exists:
+     *  - a non-truncated node adds its friction Hessian block, scaled by the
+     *    ratio of the vertex' lumped weight on that level to its weight on
+     *    the active mesh (the level's own lumped quadrature);
+     *  - a truncated node gets its diagonal multiplied by (1 + penalty), so
+     *    that smoother and coarse solve keep its correction at ~0 on every
+     *    level (the truncation seen by the whole hierarchy).
+     * The entries are restored exactly before the next change.
+     *
+     * Use. The symmetric V(nu, nu)-cycle with Gauss-Seidel smoothing
+     * (forward before, backward after the coarse correction) preconditions
+     * CG on the truncated system (ProjectedCG), which stops after
+     * LinearCorrectionControl::max_cycles cycles or a relative residual
+     * reduction of LinearCorrectionControl::tolerance. The CG acceleration
+     * makes the correction robust where the rediscretised coarse levels are
+     * not Galerkin-consistent with the truncation.
+     */
+    template <int dim>
+    class MultigridCorrection : public LinearCorrection
+    {
+    public:
+      using LevelCellIterator =
+        typename dealii::DoFHandler<dim>::level_cell_iterator;
+
+      /** Mass, viscosity and stiffness matrix of one (level) cell. */
+      using CellMatrices =
+        std::function<void(const LevelCellIterator &,
+                           std::array<dealii::FullMatrix<double>, 3> &)>;
+
+      /** The factors of M, C, K in the step matrix with a given key. */
+      using Coefficients = std::function<std::array<double, 3>(double)>;
+
+      /** Homogeneous Dirichlet components of one boundary. */
+      struct DirichletBoundary
+      {
+        dealii::types::boundary_id id;
+        dealii::ComponentMask      components;
+      };
+
+      /**
+       * Where contact node k lives: its vertex, the vector components of its
+       * dofs (in the order of ContactNode::dofs) and its lumped weight on
+       * the active mesh.
+       */
+      struct ContactVertex
+      {
+        unsigned int                vertex = 0;
+        std::array<unsigned int, 2> components{};
+        unsigned int                n_components = 0;
+        double                      weight       = 0;
+      };
+
+      struct Settings
+      {
+        unsigned int            smoothing_steps = 3;
+        LinearCorrectionControl control;
+        /** Diagonal factor (1 + penalty) of truncated contact dofs. */
+        double truncation_penalty = 1e8;
+      };
+
+      /**
+       * The DoFHandler must have its level dofs distributed. contact_id is
+       * the boundary that carries the friction.
+       */
+      MultigridCorrection(const dealii::DoFHandler<dim>        &dof_handler,
+                          const std::vector<DirichletBoundary> &dirichlet,
+                          dealii::types::boundary_id            contact_id,
+                          const std::vector<ContactVertex> &contact_vertices,
+                          const CellMatrices               &cell_matrices,
+                          const Coefficients               &coefficients,
+                          const Settings                   &settings);
+      ~MultigridCorrection() override;
+
+      unsigned int
+      solve(const TruncatedNewtonSystem  &system,
+            const dealii::Vector<double> &rhs,
+            dealii::Vector<double>       &correction) override;
+
+      /** Number of levels and dofs per level (for logs). */
+      std::vector<dealii::types::global_dof_index>
+      level_sizes() const;
+
+    private:
+      struct LevelOperators;
+      LevelOperators &
+      operators(double key);
+
+      /** Put the Hessian/truncation of `system` into the level matrices. */
+      void
+      update_contact_blocks(LevelOperators              &ops,
+                            const TruncatedNewtonSystem &system);
+
+      const dealii::DoFHandler<dim> &dof_handler;
+      Coefficients                   coefficients;
+      Settings                       settings;
+
+      dealii::MGConstrainedDoFs                          mg_constrained_dofs;
+      dealii::MGTransferPrebuilt<dealii::Vector<double>> transfer;
+
+      dealii::MGLevelObject<dealii::SparsityPattern> patterns,
+        interface_patterns;
+      /** Level M, C, K and their interface (edge) parts. */
+      std::array<dealii::MGLevelObject<dealii::SparseMatrix<double>>, 3>
+        level_matrices, interface_matrices;
+
+      /** One contact dof block on one level. */
+      struct LevelContactBlock
+      {
+        unsigned int                                   node = 0;
+        std::array<dealii::types::global_dof_index, 2> dofs{};
+        unsigned int                                   n_dofs = 0;
+        double                                         scale  = 1;
+      };
+      std::vector<std::vector<LevelContactBlock>> contact_blocks; // by level
+
+      std::vector<std::unique_ptr<LevelOperators>> cache;
+      ProjectedCG                                  cg;
+    };
+  } // namespace solvers
+} // namespace rsfcycle
+
+#endif

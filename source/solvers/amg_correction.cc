@@ -1,0 +1,138 @@
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <rsfcycle/solvers/amg_correction.h>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    using namespace dealii;
+
+    struct AMGCorrection::Hierarchy
+    {
+      double                             key = 0;
+      TrilinosWrappers::SparseMatrix     matrix;
+      std::vector<std::array<double, 4>> original; // contact blocks of A
+      TrilinosWrappers::PreconditionAMG  amg;
+      bool                               initialized = false;
+    };
+
+
+    AMGCorrection::AMGCorrection(
+      const LinearCorrectionControl   &control,
+      const std::vector<unsigned int> &component_of_dof)
+      : control(control)
+      , component_of_dof(component_of_dof)
+    {}
+
+
+    AMGCorrection::~AMGCorrection() = default;
+
+
+    AMGCorrection::Hierarchy &
+    AMGCorrection::hierarchy(const TruncatedNewtonSystem &system)
+    {
+      for (const auto &h : cache)
+        if (h->key == system.matrix_key)
+          return *h;
+      if (cache.size() >= 4)
+        cache.erase(cache.begin());
+      auto h = std::make_unique<Hierarchy>();
+      h->key = system.matrix_key;
+      // The fixed (Dirichlet, hanging) rows and columns decoupled: these are
+      // the non-contact truncated dofs, constant while the key is.
+      const std::vector<bool> &truncated = *system.truncated;
+      const ContactSet        &contact   = *system.contact;
+      SparseMatrix<double>     A(system.A->get_sparsity_pattern());
+      A.copy_from(*system.A);
+      const auto is_fixed = [&](const types::global_dof_index i) {
+        return truncated[i] && contact.dof_to_node[i] < 0;
+      };
+      for (auto it = A.begin(); it != A.end(); ++it)
+        if (it->row() != it->column() &&
+            (is_fixed(it->row()) || is_fixed(it->column())))
+          it->value() = 0;
+      h->matrix.reinit(A);
+      for (const ContactNode &node : contact.nodes)
+        {
+          std::array<double, 4> d{};
+          for (unsigned int i = 0; i < node.n_dofs; ++i)
+            for (unsigned int j = 0; j < node.n_dofs; ++j)
+              d[node.n_dofs * i + j] = A.el(node.dofs[i], node.dofs[j]);
+          h->original.push_back(d);
+        }
+      cache.push_back(std::move(h));
+      return *cache.back();
+    }
+
+
+    /**
+     * The contact blocks of the AMG matrix: A + H for sliding nodes, the
+     * diagonal times (1 + 1e8) for truncated ones (as in the geometric
+     * multigrid), then the hierarchy is recomputed (the aggregates of the
+     * first setup are kept: PreconditionAMG::reinit()).
+     */
+    void
+    AMGCorrection::update(Hierarchy &h, const TruncatedNewtonSystem &system)
+    {
+      const ContactSet &contact = *system.contact;
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          const ContactNode &node  = contact.nodes[k];
+          const bool         stuck = (*system.truncated)[node.dofs[0]];
+          const auto        &H     = (*system.node_hessians)[k];
+          for (unsigned int i = 0; i < node.n_dofs; ++i)
+            for (unsigned int j = 0; j < node.n_dofs; ++j)
+              {
+                double value = h.original[k][node.n_dofs * i + j];
+                if (stuck)
+                  value *= (i == j) ? 1. + 1e8 : 1.;
+                else
+                  value += H[node.n_dofs * i + j];
+                h.matrix.set(node.dofs[i], node.dofs[j], value);
+              }
+        }
+      h.matrix.compress(VectorOperation::insert);
+      if (h.initialized)
+        h.amg.reinit();
+      else
+        {
+          TrilinosWrappers::PreconditionAMG::AdditionalData data;
+          data.elliptic              = true;
+          data.higher_order_elements = false;
+          data.smoother_sweeps       = 3;
+          data.aggregation_threshold = 1e-4;
+          // Elasticity: one constant (translation) mode per component.
+          unsigned int n_components = 0;
+          for (const unsigned int c : component_of_dof)
+            n_components = std::max(n_components, c + 1);
+          data.constant_modes.assign(n_components,
+                                     std::vector<bool>(component_of_dof.size(),
+                                                       false));
+          for (unsigned int i = 0; i < component_of_dof.size(); ++i)
+            data.constant_modes[component_of_dof[i]][i] = true;
+          h.amg.initialize(h.matrix, data);
+          h.initialized = true;
+        }
+    }
+
+
+    unsigned int
+    AMGCorrection::solve(const TruncatedNewtonSystem &system,
+                         const Vector<double>        &rhs,
+                         Vector<double>              &correction)
+    {
+      Hierarchy &h = hierarchy(system);
+      update(h, system);
+      return cg.solve(
+        system,
+        rhs,
+        correction,
+        [&h](Vector<double> &dst, const Vector<double> &src) {
+          h.amg.vmult(dst, src);
+        },
+        control);
+    }
+  } // namespace solvers
+} // namespace rsfcycle

@@ -1,0 +1,87 @@
+#include <cmath>
+#include <rsfcycle/solvers/projected_cg.h>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    using dealii::Vector;
+
+    void
+    truncated_newton_vmult(const TruncatedNewtonSystem &system,
+                           const Vector<double>        &x,
+                           Vector<double>              &y)
+    {
+      system.A->vmult(y, x);
+      const ContactSet &contact = *system.contact;
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          const ContactNode &node = contact.nodes[k];
+          const auto        &H    = (*system.node_hessians)[k];
+          for (unsigned int i = 0; i < node.n_dofs; ++i)
+            for (unsigned int j = 0; j < node.n_dofs; ++j)
+              y[node.dofs[i]] += H[node.n_dofs * i + j] * x[node.dofs[j]];
+        }
+      const std::vector<bool> &truncated = *system.truncated;
+      for (dealii::types::global_dof_index i = 0; i < y.size(); ++i)
+        if (truncated[i])
+          y[i] = 0;
+    }
+
+
+    unsigned int
+    ProjectedCG::solve(const TruncatedNewtonSystem   &system,
+                       const Vector<double>          &rhs,
+                       Vector<double>                &x,
+                       const Preconditioner          &preconditioner,
+                       const LinearCorrectionControl &control)
+    {
+      const std::vector<bool> &truncated = *system.truncated;
+      const auto               project   = [&](Vector<double> &w) {
+        for (dealii::types::global_dof_index i = 0; i < w.size(); ++i)
+          if (truncated[i])
+            w[i] = 0;
+      };
+      if (r.size() != rhs.size())
+        {
+          r.reinit(rhs.size());
+          z.reinit(rhs.size());
+          p.reinit(rhs.size());
+          q.reinit(rhs.size());
+        }
+      x = 0;
+      r = rhs;
+      project(r);
+      const double r0 = r.l2_norm();
+      if (!(r0 > 0))
+        return 0;
+
+      unsigned int cycles = 0;
+      double       rz     = 0;
+      while (cycles < control.max_cycles)
+        {
+          preconditioner(z, r);
+          ++cycles;
+          project(z);
+          const double rz_new = r * z;
+          if (!(rz_new > 0))
+            break; // no descent left (or a non-finite preconditioner)
+          if (cycles == 1)
+            p = z;
+          else
+            p.sadd(rz_new / rz, z);
+          rz = rz_new;
+          truncated_newton_vmult(system, p, q);
+          const double pq = p * q;
+          if (!(pq > 0))
+            break;
+          const double alpha = rz / pq;
+          x.add(alpha, p);
+          r.add(-alpha, q);
+          if (r.l2_norm() <= control.tolerance * r0)
+            break;
+        }
+      return cycles;
+    }
+  } // namespace solvers
+} // namespace rsfcycle

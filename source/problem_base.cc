@@ -16,6 +16,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_out_faces.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -838,6 +839,61 @@ namespace rsfcycle
   }
 
 
+  namespace
+  {
+    /** DataOutFaces restricted to the faces of one boundary (the fault). */
+    template <int dim>
+    class BoundaryFaces : public DataOutFaces<dim>
+    {
+    public:
+      using FaceDescriptor = typename DataOutFaces<dim>::FaceDescriptor;
+
+      explicit BoundaryFaces(const types::boundary_id id)
+        : id(id)
+      {}
+
+      FaceDescriptor
+      first_face() override
+      {
+        for (const auto &cell : this->triangulation->active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (is_selected(cell, f))
+              return {cell, f};
+        return {};
+      }
+
+      FaceDescriptor
+      next_face(const FaceDescriptor &face) override
+      {
+        auto         cell = face.first;
+        unsigned int f    = face.second + 1;
+        while (cell != this->triangulation->end())
+          {
+            for (; f < cell->n_faces(); ++f)
+              if (is_selected(cell, f))
+                return {cell, f};
+            ++cell;
+            while (cell != this->triangulation->end() && !cell->is_active())
+              ++cell;
+            f = 0;
+          }
+        return {};
+      }
+
+    private:
+      bool
+      is_selected(const typename Triangulation<dim>::cell_iterator &cell,
+                  const unsigned int                                f) const
+      {
+        return cell->is_active() && cell->face(f)->at_boundary() &&
+               cell->face(f)->boundary_id() == id;
+      }
+
+      const types::boundary_id id;
+    };
+  } // namespace
+
+
   template <int dim>
   void
   ProblemBase<dim>::output_results(const BodyState &state, const double t)
@@ -849,7 +905,9 @@ namespace rsfcycle
       log_slip_rate(scalar_dof_handler.n_dofs()),
       theta(scalar_dof_handler.n_dofs()), mu(scalar_dof_handler.n_dofs()),
       traction(scalar_dof_handler.n_dofs()),
-      normal_stress(scalar_dof_handler.n_dofs());
+      normal_stress(scalar_dof_handler.n_dofs()),
+      rate_minus_v0(scalar_dof_handler.n_dofs()),
+      slip_um(scalar_dof_handler.n_dofs());
     const double v0 = scene.convergence_rate();
     log_slip_rate   = std::log10(1e-20);
     for (unsigned int k = 0; k < n_nodes; ++k)
@@ -864,8 +922,17 @@ namespace rsfcycle
           friction::friction_coefficient(info.params, state.alpha[k], rates[k]);
         traction[dof]      = state.shear_traction[k];
         normal_stress[dof] = info.normal_force / info.weight;
+        rate_minus_v0[dof] = rates[k] - v0;
+        slip_um[dof] =
+          1e6 * solvers::tangential_norm(contact.nodes[k], state.u);
       }
-    for (auto *vec : {&slip_rate, &theta, &mu, &traction, &normal_stress})
+    for (auto *vec : {&slip_rate,
+                      &theta,
+                      &mu,
+                      &traction,
+                      &normal_stress,
+                      &rate_minus_v0,
+                      &slip_um})
       scalar_constraints.distribute(*vec);
 
     DataOut<dim> data_out;
@@ -908,6 +975,29 @@ namespace rsfcycle
     pvd_records.emplace_back(t, "solution/" + name);
     std::ofstream pvd(parameters.run.output_directory + "/solution.pvd");
     DataOutBase::write_pvd_record(pvd, pvd_records);
+
+    // The fault (contact faces) at the same times: fault/fault-NNNNN.vtu,
+    // fault.pvd (the paper's figure 9 draws isolines of V - v0 on it).
+    BoundaryFaces<dim> fault(boundary_id::contact);
+    fault.attach_dof_handler(scalar_dof_handler);
+    fault.add_data_vector(rate_minus_v0, "slip_rate_minus_v0");
+    fault.add_data_vector(log_slip_rate, "log10_slip_rate_over_v0");
+    fault.add_data_vector(theta, "state");
+    fault.add_data_vector(slip_um, "slip_um");
+    fault.add_data_vector(traction, "shear_traction");
+    fault.add_data_vector(mu, "friction_coefficient");
+    fault.build_patches();
+    fault.set_flags(flags);
+    std::ofstream fault_vtu(parameters.run.output_directory + "/fault/fault-" +
+                            Utilities::int_to_string(n_snapshots, 5) + ".vtu");
+    fault.write_vtu(fault_vtu);
+    std::vector<std::pair<double, std::string>> fault_records;
+    for (unsigned int i = 0; i < pvd_records.size(); ++i)
+      fault_records.emplace_back(pvd_records[i].first,
+                                 "fault/fault-" +
+                                   Utilities::int_to_string(i, 5) + ".vtu");
+    std::ofstream fault_pvd(parameters.run.output_directory + "/fault.pvd");
+    DataOutBase::write_pvd_record(fault_pvd, fault_records);
     ++n_snapshots;
   }
 
@@ -984,6 +1074,7 @@ namespace rsfcycle
   {
     const std::string dir = parameters.run.output_directory;
     std::filesystem::create_directories(dir + "/solution");
+    std::filesystem::create_directories(dir + "/fault");
     if (!resume)
       {
         std::ofstream out(dir + "/parameters.prm");

@@ -105,6 +105,28 @@ namespace
                  << "\n";
       }
     out << "events.csv rows: " << n_events << "\n" << rows_out.str();
+
+    // Fault output: records of fault.pvd and whether each file exists.
+    std::ifstream fault_pvd(parameters.run.output_directory + "/fault.pvd");
+    if (fault_pvd)
+      {
+        unsigned int n_records = 0, n_present = 0;
+        std::string  record;
+        while (std::getline(fault_pvd, record))
+          {
+            const auto at = record.find("file=\"");
+            if (at == std::string::npos)
+              continue;
+            const auto begin = at + 6;
+            const auto name =
+              record.substr(begin, record.find('"', begin) - begin);
+            ++n_records;
+            if (std::ifstream(parameters.run.output_directory + "/" + name))
+              ++n_present;
+          }
+        out << "fault.pvd records: " << n_records
+            << ", files present: " << n_present << "\n";
+      }
   }
 
   /**

@@ -1,0 +1,193 @@
+#!/usr/bin/python3
+"""Linear corrections and rate/state couplings of rsfcycle, compared in one run.
+
+For each refinement depth of the 2D wedge (prm/wedge-2d.prm with
+`Global refinements` = 2 and `Local refinements` = DEPTHS):
+  1. preload: one run from t = 0 to T0 (just before the first event, at
+     ~529 s) with the direct correction; it ends with a checkpoint;
+  2. the window [T0, T1] (with the first two events) is resumed from copies
+     of that checkpoint once per alternative:
+       multigrid, direct, amg (fixed-point coupling, eps = delta = 1e-5),
+     and, on the depth EXPLICIT_DEPTH, explicit decoupling at
+     delta = 1e-5, 1e-6, 1e-7 against the fixed-point iteration at
+     eps = delta = 1e-5 and 1e-7 (the reference for the event times).
+Only the window is measured: wall time, time steps, spatial problems
+(TNNMG solves), fixed-point iterations per step (max, mean), TNNMG
+iterations and multigrid cycles per step and per spatial problem (max,
+mean), time per cycle per unknown. All runs share the machine in this one
+script, so the ratios are what to read; results.csv holds every row,
+cost.png the cost against N.
+
+Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5] [--jobs 1]
+"""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+T0, T1 = 520.0, 540.0
+EXPLICIT_DEPTH = 3
+
+
+def arg(name, default):
+    if name in sys.argv:
+        return sys.argv[sys.argv.index(name) + 1]
+    return default
+
+
+BUILD = next((a for a in sys.argv[1:] if not a.startswith("--") and
+              a not in (arg("--depths", ""), arg("--work", ""))),
+             os.path.join(ROOT, "build"))
+EXE = os.path.join(BUILD, "rsfcycle")
+DEPTHS = [int(d) for d in arg("--depths", "2,3,4,5").split(",")]
+WORK = arg("--work", os.path.join(HERE, "work"))
+
+
+def base_prm(depth, out, end, extra=""):
+    return f"""include {ROOT}/prm/wedge-2d.prm
+set End time = {end}
+set Output directory = {out}
+set Overwrite output = true
+subsection Mesh
+  set Global refinements = 2
+  set Local refinements = {depth}
+end
+subsection Output
+  set Write VTU = false
+  set Progress interval = 1e9
+  set Checkpoint minutes = 1e6
+end
+{extra}"""
+
+
+def run(args, log):
+    start = time.time()
+    with open(log, "w") as f:
+        subprocess.run([EXE] + args, stdout=f, stderr=subprocess.STDOUT,
+                       check=True)
+    return time.time() - start
+
+
+def set_entry(prm_file, name, value):
+    lines = open(prm_file).read().split("\n")
+    for i, line in enumerate(lines):
+        words = line.split("=")[0].split()
+        if words[:1] == ["set"] and " ".join(words[1:]) == name:
+            lines[i] = f"  set {name} = {value}"
+    open(prm_file, "w").write("\n".join(lines))
+
+
+def window(depth, name, entries):
+    pre = os.path.join(WORK, f"pre-{depth}")
+    out = os.path.join(WORK, f"{name}-{depth}")
+    shutil.rmtree(out, ignore_errors=True)
+    shutil.copytree(pre, out)
+    prm = os.path.join(out, "parameters.prm")
+    set_entry(prm, "End time", T1)
+    set_entry(prm, "Output directory", out)
+    for key, value in entries.items():
+        set_entry(prm, key, value)
+    wall = run(["--resume", out], out + ".log")
+    rows = [r for r in csv.DictReader(open(os.path.join(out,
+                                                        "time-series.csv")))
+            if float(r["time_s"]) > T0 + 1e-9]
+    n = int(open(out + ".log").read().split(" unknowns")[0].split()[-1])
+    fp = [int(r["fixed_point_iterations"]) for r in rows]
+    tn = [int(r["tnnmg_iterations"]) for r in rows]
+    li = [int(r["linear_iterations"]) for r in rows]
+    problems = sum(int(r["spatial_problems"]) for r in rows)
+    all_tn = sum(int(r["all_tnnmg_iterations"]) for r in rows)
+    all_li = sum(int(r["all_linear_iterations"]) for r in rows)
+    events = [e for e in csv.DictReader(open(os.path.join(out, "events.csv")))
+              if float(e["start_s"]) > T0]
+    return dict(depth=depth, name=name, unknowns=n, wall_s=round(wall, 2),
+                steps=len(rows), spatial_problems=problems,
+                fp_max=max(fp), fp_mean=round(sum(fp) / len(fp), 2),
+                tnnmg_per_step_max=max(tn),
+                tnnmg_per_step_mean=round(sum(tn) / len(tn), 2),
+                cycles_per_step_max=max(li),
+                cycles_per_step_mean=round(sum(li) / len(li), 2),
+                cycles_per_problem_mean=round(all_li / problems, 2),
+                all_tnnmg=all_tn, all_cycles=all_li,
+                us_per_cycle_per_unknown=round(1e6 * wall / all_li / n, 4),
+                events=len(events),
+                event_starts=" ".join(e["start_s"] for e in events))
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    results = []
+    for depth in DEPTHS:
+        pre = os.path.join(WORK, f"pre-{depth}")
+        prm = os.path.join(WORK, f"pre-{depth}.prm")
+        open(prm, "w").write(base_prm(depth, pre, T0, """subsection Solver
+  set Linear correction = direct
+end"""))
+        t = run([prm], pre + ".log")
+        print(f"depth {depth}: preload to {T0} s in {t:.0f} s", flush=True)
+        variants = {
+            "multigrid": {"Linear correction": "multigrid"},
+            "direct": {"Linear correction": "direct"},
+            "amg": {"Linear correction": "amg"},
+        }
+        if depth == EXPLICIT_DEPTH:
+            for d in ["1e-5", "1e-6", "1e-7"]:
+                variants[f"explicit-{d}"] = {"Linear correction": "multigrid",
+                                             "Coupling": "explicit",
+                                             "Tolerance": d}
+            variants["fixed-point-1e-7"] = {"Linear correction": "multigrid",
+                                            "Tolerance": "1e-7",
+                                            "Fixed-point tolerance": "1e-7"}
+        for name, entries in variants.items():
+            entries = dict(entries)
+            entries.setdefault("Linear correction cycles", 2)
+            entries.setdefault("TNNMG tolerance", "1e-6")
+            r = window(depth, name, entries)
+            results.append(r)
+            print(r, flush=True)
+            with open(os.path.join(HERE, "results.csv"), "w") as f:
+                w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
+                w.writeheader()
+                w.writerows(results)
+    plot(results)
+
+
+def plot(results):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    for name in ["multigrid", "direct", "amg"]:
+        rows = [r for r in results if r["name"] == name]
+        if not rows:
+            continue
+        n = [r["unknowns"] for r in rows]
+        ax[0].loglog(n, [r["wall_s"] for r in rows], "o-", label=name)
+        ax[1].semilogx(n, [r["cycles_per_step_mean"] for r in rows], "o-",
+                       label=name + " (mean)")
+        ax[1].semilogx(n, [r["cycles_per_step_max"] for r in rows], "x--",
+                       label=name + " (max)")
+    ax[0].set_xlabel("unknowns N")
+    ax[0].set_ylabel(f"wall time of [{T0:g}, {T1:g}] s [s]")
+    ax[0].legend()
+    ax[1].set_xlabel("unknowns N")
+    ax[1].set_ylabel("linear cycles per time step")
+    ax[1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "cost.png"), dpi=120)
+
+
+if __name__ == "__main__":
+    if "--plot" in sys.argv:
+        rows = list(csv.DictReader(open(os.path.join(HERE, "results.csv"))))
+        for r in rows:
+            for key in ["unknowns", "wall_s", "cycles_per_step_mean",
+                        "cycles_per_step_max"]:
+                r[key] = float(r[key])
+        plot(rows)
+    else:
+        main()

@@ -14,6 +14,7 @@ namespace rsfcycle
       double                             key = 0;
       TrilinosWrappers::SparseMatrix     matrix;
       std::vector<std::array<double, 4>> original; // contact blocks of A
+      std::vector<std::array<double, 4>> current;  // ... in the hierarchy
       TrilinosWrappers::PreconditionAMG  amg;
       bool                               initialized = false;
     };
@@ -77,6 +78,12 @@ namespace rsfcycle
     AMGCorrection::update(Hierarchy &h, const TruncatedNewtonSystem &system)
     {
       const ContactSet &contact = *system.contact;
+      // The wanted contact blocks; the hierarchy is rebuilt only if one of
+      // their diagonals differs by more than a factor 2 from the one it was
+      // built with (CG with the exact operator absorbs smaller changes).
+      bool changed = !h.initialized;
+      h.current.resize(contact.nodes.size());
+      std::vector<std::array<double, 4>> wanted(contact.nodes.size());
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         {
           const ContactNode &node  = contact.nodes[k];
@@ -85,14 +92,30 @@ namespace rsfcycle
           for (unsigned int i = 0; i < node.n_dofs; ++i)
             for (unsigned int j = 0; j < node.n_dofs; ++j)
               {
-                double value = h.original[k][node.n_dofs * i + j];
+                const unsigned int ij    = node.n_dofs * i + j;
+                double             value = h.original[k][ij];
                 if (stuck)
                   value *= (i == j) ? 1. + 1e8 : 1.;
                 else
-                  value += H[node.n_dofs * i + j];
-                h.matrix.set(node.dofs[i], node.dofs[j], value);
+                  value += H[ij];
+                wanted[k][ij] = value;
+                if (i == j && !(value <= 2 * h.current[k][ij] &&
+                                h.current[k][ij] <= 2 * value))
+                  changed = true;
               }
         }
+      if (!changed)
+        return;
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          const ContactNode &node = contact.nodes[k];
+          for (unsigned int i = 0; i < node.n_dofs; ++i)
+            for (unsigned int j = 0; j < node.n_dofs; ++j)
+              h.matrix.set(node.dofs[i],
+                           node.dofs[j],
+                           wanted[k][node.n_dofs * i + j]);
+        }
+      h.current = wanted;
       h.matrix.compress(VectorOperation::insert);
       if (h.initialized)
         h.amg.reinit();

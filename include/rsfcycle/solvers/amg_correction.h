@@ -14,10 +14,11 @@ namespace rsfcycle
      * Algebraic multigrid (Trilinos ML) as the linear correction, for
      * comparison and as a fall-back: one AMG hierarchy per step matrix
      * (cached by matrix_key; the fixed rows and columns decoupled), whose
-     * contact blocks get the friction Hessian and the truncation of every
-     * TNNMG iteration (then the hierarchy is recomputed on the aggregates
-     * of its first setup), used as preconditioner of CG on the truncated
-     * system (ProjectedCG).
+     * contact blocks get the friction Hessian and the truncation of the
+     * TNNMG iteration (the hierarchy is recomputed on the aggregates of its
+     * first setup when a contact diagonal changed by more than a factor 2
+     * since), used as preconditioner of CG on the truncated system
+     * (ProjectedCG), which sees the exact operator.
      */
     class AMGCorrection : public LinearCorrection
     {

@@ -35,8 +35,12 @@ namespace rsfcycle
       mg::Matrix<Vector<double>>                      mg_interface_up;
       mg::Matrix<Vector<double>>                      mg_interface_down;
       using Smoother = PreconditionSOR<SparseMatrix<double>>;
-      mg::SmootherRelaxation<Smoother, Vector<double>> smoother;
-      std::unique_ptr<Multigrid<Vector<double>>>       multigrid;
+      /** Forward Gauss-Seidel before, backward after: the V-cycle is
+       * symmetric (needed by CG; alternating sweeps with an odd count of
+       * them would not be). */
+      mg::SmootherRelaxation<Smoother, Vector<double>> pre_smoother,
+        post_smoother;
+      std::unique_ptr<Multigrid<Vector<double>>> multigrid;
       std::unique_ptr<
         PreconditionMG<dim, Vector<double>, MGTransferPrebuilt<Vector<double>>>>
         preconditioner;
@@ -251,12 +255,20 @@ namespace rsfcycle
       ops->mg_matrix.initialize(ops->matrices);
       ops->mg_interface_up.initialize(ops->interface);
       ops->mg_interface_down.initialize(ops->interface);
-      ops->smoother.initialize(
-        ops->matrices, typename LevelOperators::Smoother::AdditionalData(1.0));
-      ops->smoother.set_steps(settings.smoothing_steps);
-      ops->smoother.set_symmetric(true);
-      ops->multigrid = std::make_unique<Multigrid<Vector<double>>>(
-        ops->mg_matrix, ops->coarse, transfer, ops->smoother, ops->smoother);
+      for (auto *smoother : {&ops->pre_smoother, &ops->post_smoother})
+        {
+          smoother->initialize(
+            ops->matrices,
+            typename LevelOperators::Smoother::AdditionalData(1.0));
+          smoother->set_steps(settings.smoothing_steps);
+        }
+      ops->post_smoother.set_transpose(true);
+      ops->multigrid =
+        std::make_unique<Multigrid<Vector<double>>>(ops->mg_matrix,
+                                                    ops->coarse,
+                                                    transfer,
+                                                    ops->pre_smoother,
+                                                    ops->post_smoother);
       ops->multigrid->set_edge_matrices(ops->mg_interface_down,
                                         ops->mg_interface_up);
       ops->preconditioner =

@@ -18,7 +18,10 @@ mean), time per cycle per unknown. All runs share the machine in this one
 script, so the ratios are what to read; results.csv holds every row,
 cost.png the cost against N.
 
-Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5] [--jobs 1]
+Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5,6]
+                                 [--work DIR]
+       benchmarks/solvers/run.py --table    (markdown tables of results.csv)
+       benchmarks/solvers/run.py --plot     (cost.png from results.csv)
 """
 import csv
 import os
@@ -181,8 +184,52 @@ def plot(results):
     fig.savefig(os.path.join(HERE, "cost.png"), dpi=120)
 
 
+def table(rows):
+    """Markdown tables of results.csv (for the README)."""
+    print("| depth | N | correction | wall [s] | steps | FP max/mean | "
+          "TNNMG/step mean | cycles/step max/mean | µs/cycle/N | "
+          "wall / multigrid |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    mg = {r["depth"]: float(r["wall_s"]) for r in rows
+          if r["name"] == "multigrid"}
+    for r in rows:
+        if r["name"] not in ("multigrid", "direct", "amg"):
+            continue
+        print(f"| {r['depth']} | {r['unknowns']} | {r['name']} | "
+              f"{r['wall_s']} | {r['steps']} | {r['fp_max']}/{r['fp_mean']} "
+              f"| {r['tnnmg_per_step_mean']} | {r['cycles_per_step_max']}/"
+              f"{r['cycles_per_step_mean']} | "
+              f"{r['us_per_cycle_per_unknown']} | "
+              f"{float(r['wall_s']) / mg[r['depth']]:.2f} |")
+    print()
+    ref = [r for r in rows if r["name"] == "fixed-point-1e-7"]
+    if not ref:
+        return
+    t_ref = [float(x) for x in ref[0]["event_starts"].split()]
+    depth = ref[0]["depth"]
+    print("| coupling | tolerance | wall [s] | steps | spatial problems | "
+          "max error of the event starts [ms] |")
+    print("|---|---|---|---|---|---|")
+    for r in rows:
+        if r["depth"] != depth or r["name"] in ("direct", "amg"):
+            continue
+        t = [float(x) for x in r["event_starts"].split()]
+        err = max(abs(a - b) for a, b in zip(t, t_ref)) * 1e3
+        name = "fixed-point" if r["name"] in ("multigrid",
+                                              "fixed-point-1e-7") \
+            else "explicit"
+        tol = "1e-5"
+        for prefix in ("explicit-", "fixed-point-"):
+            if r["name"].startswith(prefix):
+                tol = r["name"][len(prefix):]
+        print(f"| {name} | {tol} | {r['wall_s']} | {r['steps']} | "
+              f"{r['spatial_problems']} | {err:.2f} |")
+
+
 if __name__ == "__main__":
-    if "--plot" in sys.argv:
+    if "--table" in sys.argv:
+        table(list(csv.DictReader(open(os.path.join(HERE, "results.csv")))))
+    elif "--plot" in sys.argv:
         rows = list(csv.DictReader(open(os.path.join(HERE, "results.csv"))))
         for r in rows:
             for key in ["unknowns", "wall_s", "cycles_per_step_mean",

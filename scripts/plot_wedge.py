@@ -506,6 +506,43 @@ def fig5(events, transition, source, out):
     savefig(fig, os.path.join(out, "fig5-event-statistics.png"))
 
 
+def solver_panels(axes, t, sel, ts):
+    """Step size, fixed-point iterations and inner (TNNMG, linear-correction)
+    iterations per accepted step on three axes (figures 6 and 10)."""
+    axes[0].semilogy(t[sel], ts["step_size_s"][sel], ".-", ms=2, lw=0.6)
+    axes[0].set_ylabel("time step size [s]")
+    sizes = np.unique(ts["step_size_s"][sel])
+    if 1 < len(sizes) <= 12:  # step doubling: few distinct sizes, label all
+        axes[0].set_yticks(sizes)
+        axes[0].yaxis.set_major_formatter(
+            matplotlib.ticker.FormatStrFormatter("%g"))
+        axes[0].yaxis.set_minor_locator(matplotlib.ticker.NullLocator())
+    dt = ts["step_size_s"][sel]
+    if len(dt):
+        axes[0].set_title(f"step size from {dt.max():.3g} s to {dt.min():.3g}"
+                          f" s (factor {dt.max() / dt.min():.0f})",
+                          fontsize=9)
+    fp = ts["fixed_point_iterations"][sel]
+    axes[1].plot(t[sel], fp, ".-", ms=2, lw=0.6)
+    axes[1].set_ylabel("fixed-point\niterations")
+    if len(fp):
+        axes[1].set_title(f"max {fp.max():.0f}, mean {fp.mean():.2f} per "
+                          "step", fontsize=9)
+    lin = ts["linear_iterations"][sel]
+    axes[2].plot(t[sel], lin, ".-", ms=2, lw=0.6,
+                 label="linear-correction cycles (multigrid/AMG; 1 per "
+                 "direct solve)")
+    if "tnnmg_iterations" in ts:
+        axes[2].plot(t[sel], ts["tnnmg_iterations"][sel], "x", ms=3,
+                     color="tab:orange", label="TNNMG iterations")
+    axes[2].set_ylabel("inner iterations\n(sum over the fixed-\npoint "
+                       "iterations)")
+    axes[2].legend(fontsize=7)
+    if len(lin):
+        axes[2].set_title(f"cycles: max {lin.max():.0f}, mean "
+                          f"{lin.mean():.1f} per step", fontsize=9)
+
+
 def fig6(ts, events, window, out, n_events, prm):
     t = ts["time_s"]
     if window is None:
@@ -524,37 +561,7 @@ def fig6(ts, events, window, out, n_events, prm):
     axes[0].set_title("backstop's (laboratory) frame, as in figure 3(c)",
                       fontsize=9)
     axes[0].legend(fontsize=7)
-    axes[1].semilogy(t[sel], ts["step_size_s"][sel], ".-", ms=2, lw=0.6)
-    axes[1].set_ylabel("time step size [s]")
-    sizes = np.unique(ts["step_size_s"][sel])
-    if 1 < len(sizes) <= 12:  # step doubling: few distinct sizes, label all
-        axes[1].set_yticks(sizes)
-        axes[1].yaxis.set_major_formatter(
-            matplotlib.ticker.FormatStrFormatter("%g"))
-        axes[1].yaxis.set_minor_locator(matplotlib.ticker.NullLocator())
-    dt = ts["step_size_s"][sel]
-    if len(dt):
-        axes[1].set_title(f"step size from {dt.max():.3g} s to {dt.min():.3g}"
-                          f" s (factor {dt.max() / dt.min():.0f})",
-                          fontsize=9)
-    fp = ts["fixed_point_iterations"][sel]
-    axes[2].plot(t[sel], fp, ".-", ms=2, lw=0.6)
-    axes[2].set_ylabel("fixed-point\niterations")
-    if len(fp):
-        axes[2].set_title(f"max {fp.max():.0f} per spatial problem",
-                          fontsize=9)
-    lin = ts["linear_iterations"][sel]
-    axes[3].plot(t[sel], lin, ".-", ms=2, lw=0.6,
-                 label="linear corrections (linear_iterations)")
-    if "tnnmg_iterations" in ts:
-        axes[3].plot(t[sel], ts["tnnmg_iterations"][sel], "x", ms=3,
-                     color="tab:orange", label="TNNMG iterations")
-    axes[3].set_ylabel("inner iterations\n(sum over the fixed-\npoint "
-                       "iterations)")
-    axes[3].legend(fontsize=7)
-    if len(lin):
-        axes[3].set_title(f"max {lin.max():.0f} per spatial problem",
-                          fontsize=9)
+    solver_panels(axes[1:], t, sel, ts)
     axes[3].set_xlabel("time t [s]")
     for ax in axes:
         ax.grid(alpha=0.3)

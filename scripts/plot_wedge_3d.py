@@ -107,33 +107,11 @@ def fig9(profile, event, prm, v0, out):
 
 def fig10(ts, events, out, n_events):
     t = ts["time_s"]
-    shown = events[-n_events:] if events else []
-    if shown:
-        t0 = shown[0].start - 0.5 * (shown[-1].start - shown[0].start) / \
-            max(len(shown) - 1, 1)
-        t1 = min(t[-1], shown[-1].end + 0.2 * (shown[-1].start - t0 + 1e-9))
-    else:
-        t0, t1 = t[0], t[-1]
+    window, shown = pw.event_window(events, t[-1], n_events)
+    t0, t1 = window if window else (t[0], t[-1])
     sel = (t >= t0) & (t <= t1)
     fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
-    dt = ts["step_size_s"][sel]
-    axes[0].semilogy(t[sel], dt, ".-", ms=2, lw=0.6)
-    axes[0].set_ylabel("time step size [s]")
-    if len(dt):
-        axes[0].set_title(f"from {dt.max():.3g} s to {dt.min():.3g} s "
-                          f"(factor {dt.max() / dt.min():.0f})", fontsize=9)
-    fp = ts["fixed_point_iterations"][sel]
-    axes[1].plot(t[sel], fp, ".-", ms=2, lw=0.6)
-    axes[1].set_ylabel("fixed-point iterations")
-    if len(fp):
-        axes[1].set_title(f"max {fp.max():.0f}, mean {fp.mean():.2f}",
-                          fontsize=9)
-    axes[2].plot(t[sel], ts["linear_iterations"][sel], ".-", ms=2, lw=0.6,
-                 label="multigrid cycles")
-    axes[2].plot(t[sel], ts["tnnmg_iterations"][sel], "x", ms=3,
-                 label="TNNMG iterations")
-    axes[2].set_ylabel("per step (sum over the\nfixed-point iterations)")
-    axes[2].legend(fontsize=7)
+    pw.solver_panels(axes, t, sel, ts)
     axes[2].set_xlabel("time t [s]")
     for ax in axes:
         ax.grid(alpha=0.3)

@@ -1,5 +1,6 @@
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/solvers/tnnmg.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -151,7 +152,7 @@ namespace rsfcycle
                       "halved");
     prm.declare_entry("Linear correction",
                       "multigrid",
-                      Selection("multigrid|direct|amg"),
+                      Selection(solvers::linear_correction_names()),
                       "Linear correction of TNNMG: geometric multigrid on the "
                       "mesh levels (preconditioning CG on the truncated "
                       "system), direct (sparse Cholesky with a Schur "

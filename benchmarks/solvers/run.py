@@ -16,12 +16,13 @@ Only the window is measured: wall time, time steps, spatial problems
 iterations and multigrid cycles per step and per spatial problem (max,
 mean), time per cycle per unknown. All runs share the machine in this one
 script, so the ratios are what to read; results.csv holds every row,
-cost.png the cost against N.
+doc/figures/solvers-cost.png the cost
+against N.
 
 Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5,6]
                                  [--work DIR]
        benchmarks/solvers/run.py --table    (markdown tables of results.csv)
-       benchmarks/solvers/run.py --plot     (cost.png from results.csv)
+       benchmarks/solvers/run.py --plot     (doc/figures/solvers-cost.png)
 """
 import csv
 import os
@@ -181,7 +182,8 @@ def plot(results):
     ax[1].set_ylabel("linear cycles per time step")
     ax[1].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "cost.png"), dpi=120)
+    fig.savefig(os.path.join(ROOT, "doc", "figures", "solvers-cost.png"),
+                dpi=120)
 
 
 def table(rows):

@@ -15,6 +15,7 @@ namespace rsfcycle
       TrilinosWrappers::SparseMatrix     matrix;
       std::vector<std::array<double, 4>> original; // contact blocks of A
       std::vector<std::array<double, 4>> current;  // ... in the hierarchy
+      std::vector<std::array<double, 4>> wanted;   // ... for this system
       TrilinosWrappers::PreconditionAMG  amg;
       bool                               initialized = false;
     };
@@ -69,10 +70,9 @@ namespace rsfcycle
 
 
     /**
-     * The contact blocks of the AMG matrix: A + H for sliding nodes, the
-     * diagonal times (1 + 1e8) for truncated ones (as in the geometric
-     * multigrid), then the hierarchy is recomputed (the aggregates of the
-     * first setup are kept: PreconditionAMG::reinit()).
+     * The contact blocks of the AMG matrix (contact_block_entry(), as in the
+     * geometric multigrid), then the hierarchy is recomputed (the aggregates of
+     * the first setup are kept: PreconditionAMG::reinit()).
      */
     void
     AMGCorrection::update(Hierarchy &h, const TruncatedNewtonSystem &system)
@@ -83,24 +83,18 @@ namespace rsfcycle
       // built with (CG with the exact operator absorbs smaller changes).
       bool changed = !h.initialized;
       h.current.resize(contact.nodes.size());
-      std::vector<std::array<double, 4>> wanted(contact.nodes.size());
+      h.wanted.resize(contact.nodes.size());
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         {
-          const ContactNode &node  = contact.nodes[k];
-          const bool         stuck = (*system.truncated)[node.dofs[0]];
-          const auto        &H     = (*system.node_hessians)[k];
-          for (unsigned int i = 0; i < node.n_dofs; ++i)
-            for (unsigned int j = 0; j < node.n_dofs; ++j)
+          const unsigned int n = contact.nodes[k].n_dofs;
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
               {
-                const unsigned int ij    = node.n_dofs * i + j;
-                double             value = h.original[k][ij];
-                if (stuck)
-                  value *= (i == j) ? 1. + 1e8 : 1.;
-                else
-                  value += H[ij];
-                wanted[k][ij] = value;
-                if (i == j && !(value <= 2 * h.current[k][ij] &&
-                                h.current[k][ij] <= 2 * value))
+                const double value = contact_block_entry(
+                  system, k, i, j, h.original[k][n * i + j]);
+                h.wanted[k][n * i + j] = value;
+                if (i == j && !(value <= 2 * h.current[k][n * i + j] &&
+                                h.current[k][n * i + j] <= 2 * value))
                   changed = true;
               }
         }
@@ -113,9 +107,9 @@ namespace rsfcycle
             for (unsigned int j = 0; j < node.n_dofs; ++j)
               h.matrix.set(node.dofs[i],
                            node.dofs[j],
-                           wanted[k][node.n_dofs * i + j]);
+                           h.wanted[k][node.n_dofs * i + j]);
         }
-      h.current = wanted;
+      h.current = h.wanted;
       h.matrix.compress(VectorOperation::insert);
       if (h.initialized)
         h.amg.reinit();

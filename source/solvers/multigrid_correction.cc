@@ -287,27 +287,19 @@ namespace rsfcycle
       LevelOperators              &ops,
       const TruncatedNewtonSystem &system)
     {
-      const ContactSet        &contact   = *system.contact;
-      const std::vector<bool> &truncated = *system.truncated;
       for (unsigned int level = 0; level < contact_blocks.size(); ++level)
         for (unsigned int b = 0; b < contact_blocks[level].size(); ++b)
           {
             const LevelContactBlock     &block = contact_blocks[level][b];
             const std::array<double, 4> &d     = ops.original[level][b];
             const unsigned int           n     = block.n_dofs;
-            const ContactNode           &node  = contact.nodes[block.node];
-            const bool                   stuck = truncated[node.dofs[0]];
-            const auto &H = (*system.node_hessians)[block.node];
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = 0; j < n; ++j)
-                {
-                  double value = d[n * i + j];
-                  if (stuck)
-                    value *= (i == j) ? 1. + settings.truncation_penalty : 1.;
-                  else if (n == node.n_dofs)
-                    value += block.scale * H[n * i + j];
-                  ops.matrices[level].set(block.dofs[i], block.dofs[j], value);
-                }
+                ops.matrices[level].set(
+                  block.dofs[i],
+                  block.dofs[j],
+                  contact_block_entry(
+                    system, block.node, i, j, d[n * i + j], block.scale));
           }
       ops.coarse_matrix.copy_from(ops.matrices[0]);
       ops.coarse.initialize(ops.coarse_matrix);

@@ -34,7 +34,8 @@ namespace rsfcycle
      *  - a non-truncated node adds its friction Hessian block, scaled by the
      *    ratio of the vertex' lumped weight on that level to its weight on
      *    the active mesh (the level's own lumped quadrature);
-     *  - a truncated node gets its diagonal multiplied by (1 + penalty), so
+     *  - a truncated node gets its diagonal multiplied by
+     *    (1 + truncation_penalty), so
      *    that smoother and coarse solve keep its correction at ~0 on every
      *    level (the truncation seen by the whole hierarchy).
      * The entries are restored exactly before the next change.
@@ -86,8 +87,6 @@ namespace rsfcycle
       {
         unsigned int            smoothing_steps = 3;
         LinearCorrectionControl control;
-        /** Diagonal factor (1 + penalty) of truncated contact dofs. */
-        double truncation_penalty = 1e8;
       };
 
       /**

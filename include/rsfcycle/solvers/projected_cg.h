@@ -19,6 +19,34 @@ namespace rsfcycle
     };
 
     /**
+     * The diagonal factor (1 + penalty) that the preconditioners of the
+     * iterative corrections put on truncated contact dofs, so that their
+     * smoothers and coarse solves keep those corrections at ~0.
+     */
+    constexpr double truncation_penalty = 1e8;
+
+    /**
+     * Entry (i, j) of the d x d contact block of node k (row-major index
+     * d i + j) in a preconditioner's matrix: the original entry of A plus
+     * `scale` times the friction Hessian for a sliding node, the diagonal
+     * times (1 + truncation_penalty) for a truncated one. Applied to the
+     * original values every time, so that earlier changes are undone.
+     */
+    inline double
+    contact_block_entry(const TruncatedNewtonSystem &system,
+                        const unsigned int           k,
+                        const unsigned int           i,
+                        const unsigned int           j,
+                        const double                 original,
+                        const double                 scale = 1.)
+    {
+      const ContactNode &node = system.contact->nodes[k];
+      if ((*system.truncated)[node.dofs[0]])
+        return (i == j) ? original * (1. + truncation_penalty) : original;
+      return original + scale * (*system.node_hessians)[k][node.n_dofs * i + j];
+    }
+
+    /**
      * y = (A + H) x on the non-truncated components, 0 on the truncated ones
      * (x must vanish on them): the operator of the truncated Newton system.
      */

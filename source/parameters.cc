@@ -25,6 +25,11 @@ namespace rsfcycle
                       "The physical set-up; its parameters are in the "
                       "subsection of the same name");
     prm.declare_entry("End time", "1000", Double(0), "Simulated time span [s]");
+    prm.declare_entry("Stop after events",
+                      "0",
+                      Integer(0),
+                      "End the run, before End time, at the end of this "
+                      "many events (0: run to End time)");
     prm.declare_entry("Output directory",
                       "output",
                       Anything(),
@@ -39,11 +44,12 @@ namespace rsfcycle
   void
   RunParameters::parse_parameters(ParameterHandler &prm)
   {
-    dimension        = prm.get_integer("Dimension");
-    scene            = prm.get("Scene");
-    end_time         = prm.get_double("End time");
-    output_directory = prm.get("Output directory");
-    overwrite_output = prm.get_bool("Overwrite output");
+    dimension         = prm.get_integer("Dimension");
+    scene             = prm.get("Scene");
+    end_time          = prm.get_double("End time");
+    stop_after_events = prm.get_integer("Stop after events");
+    output_directory  = prm.get("Output directory");
+    overwrite_output  = prm.get_bool("Overwrite output");
     if (output_directory.empty())
       throw std::invalid_argument("Output directory: must not be empty");
   }
@@ -164,7 +170,7 @@ namespace rsfcycle
                       "Gauss-Seidel sweeps before and after the coarse "
                       "correction of the V-cycle (nu1 = nu2)");
     prm.declare_entry("Linear correction cycles",
-                      "5",
+                      "1",
                       Integer(1, 1000),
                       "Multigrid (or AMG) cycles per linear correction at "
                       "most, each one CG iteration");
@@ -178,6 +184,16 @@ namespace rsfcycle
                       Double(1e-300, 1),
                       "Stop TNNMG when the energy norm of the update, relative "
                       "to that of the iterate, is below this [-]");
+    prm.declare_entry("Inner tolerance factor",
+                      "0.3",
+                      Double(0, 1),
+                      "Inexact fixed-point iteration: TNNMG stops in "
+                      "fixed-point iteration k at the relative change "
+                      "max(TNNMG tolerance, factor * d_{k-1}), d_{k-1} the "
+                      "state distance (14) of the previous iteration and "
+                      "d_0 = 1, so early iterations are solved loosely and "
+                      "the last ones to TNNMG tolerance (0: always TNNMG "
+                      "tolerance; explicit coupling always uses it) [-]");
     prm.declare_entry("Maximum TNNMG iterations",
                       "100",
                       Integer(1, 100000),
@@ -200,13 +216,14 @@ namespace rsfcycle
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");
-    linear_correction    = prm.get("Linear correction");
-    smoothing_steps      = prm.get_integer("Multigrid smoothing steps");
-    correction_cycles    = prm.get_integer("Linear correction cycles");
-    correction_tolerance = prm.get_double("Linear correction tolerance");
-    tnnmg_tolerance      = prm.get_double("TNNMG tolerance");
-    max_tnnmg_iterations = prm.get_integer("Maximum TNNMG iterations");
-    truncation_ratio     = prm.get_double("Truncation ratio");
+    linear_correction      = prm.get("Linear correction");
+    smoothing_steps        = prm.get_integer("Multigrid smoothing steps");
+    correction_cycles      = prm.get_integer("Linear correction cycles");
+    correction_tolerance   = prm.get_double("Linear correction tolerance");
+    tnnmg_tolerance        = prm.get_double("TNNMG tolerance");
+    inner_tolerance_factor = prm.get_double("Inner tolerance factor");
+    max_tnnmg_iterations   = prm.get_integer("Maximum TNNMG iterations");
+    truncation_ratio       = prm.get_double("Truncation ratio");
     prm.leave_subsection();
   }
 

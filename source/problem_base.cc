@@ -708,6 +708,13 @@ namespace rsfcycle
 
     // The rate/state coupling (18) is the generic one of
     // time/rate_state_coupling.h; the velocity solve is TNNMG.
+    const bool explicit_coupling = parameters.solver.coupling == "explicit";
+    // Inexact fixed point (`Inner tolerance factor`); a cap of one
+    // fixed-point iteration needs that one solve at TNNMG tolerance.
+    const bool inexact = !explicit_coupling &&
+                         parameters.solver.inner_tolerance_factor >
+                           parameters.solver.tnnmg_tolerance &&
+                         parameters.solver.max_fixed_point_iterations > 1;
     std::vector<double> alpha = old.alpha;
     unsigned int        k     = 0;
     double              d     = 0;
@@ -717,7 +724,16 @@ namespace rsfcycle
       ++k;
       for (unsigned int i = 0; i < n_nodes; ++i)
         potentials[i].alpha = alpha_k[i];
-      const solvers::TNNMGStatistics stats = tnnmg->solve(problem, v);
+      // Inexact fixed point: the early iterations, whose state is still
+      // far from converged, get a looser TNNMG tolerance (d is the state
+      // distance of the previous iteration; d_0 = 1).
+      const double inner_tolerance =
+        inexact ? std::max(parameters.solver.tnnmg_tolerance,
+                           parameters.solver.inner_tolerance_factor *
+                             (k == 1 ? 1. : d)) :
+                           parameters.solver.tnnmg_tolerance;
+      const solvers::TNNMGStatistics stats =
+        tnnmg->solve(problem, v, inner_tolerance);
       next.statistics.fixed_point_iterations = k;
       next.statistics.tnnmg_iterations += stats.iterations;
       next.statistics.linear_iterations += stats.linear_iterations;
@@ -738,9 +754,8 @@ namespace rsfcycle
       return stats.converged;
     };
     const auto coupled = time::couple_rate_and_state(
-      parameters.solver.coupling == "explicit" ?
-        time::Coupling::explicit_decoupling :
-        time::Coupling::fixed_point,
+      explicit_coupling ? time::Coupling::explicit_decoupling :
+                          time::Coupling::fixed_point,
       parameters.solver.fixed_point_tolerance,
       parameters.solver.max_fixed_point_iterations,
       old.v,
@@ -751,7 +766,9 @@ namespace rsfcycle
       [this](const std::vector<double> &a1, const std::vector<double> &a2) {
         return state_distance(a1, a2);
       },
-      &d);
+      &d,
+      // a first solve at the loose tolerance factor * 1 is never accepted
+      inexact ? 2 : 1);
     if (!coupled)
       {
         if (failure.empty())
@@ -1244,10 +1261,11 @@ namespace rsfcycle
     double       &last_profile  = run_state.last_profile;
     const auto    wall_start    = std::chrono::steady_clock::now();
     auto          last_progress = wall_start, last_checkpoint = wall_start;
-    const double  t_start = t;
-    stop_signal           = 0;
-    const auto old_int    = std::signal(SIGINT, handle_stop_signal);
-    const auto old_term   = std::signal(SIGTERM, handle_stop_signal);
+    const double  t_start         = t;
+    bool          stop_for_events = false;
+    stop_signal                   = 0;
+    const auto old_int            = std::signal(SIGINT, handle_stop_signal);
+    const auto old_term           = std::signal(SIGTERM, handle_stop_signal);
 
     log << "*** Time loop to t = " << end_time << " s" << std::endl;
     {
@@ -1295,6 +1313,9 @@ namespace rsfcycle
                   << e.peak_slip_rate / v0 << " v0, rupture width "
                   << e.rupture_width() << " m, slip " << e.slip * 1e6 << " um"
                   << std::endl;
+              stop_for_events =
+                parameters.run.stop_after_events > 0 &&
+                events.events().size() >= parameters.run.stop_after_events;
             }
           if (!was_in_event && events.in_event())
             log << "    event " << events.n_started() << " starts at t = " << t
@@ -1383,6 +1404,13 @@ namespace rsfcycle
               std::signal(SIGINT, old_int);
               std::signal(SIGTERM, old_term);
               return false;
+            }
+          if (stop_for_events)
+            {
+              log << "*** Stop after events = "
+                  << parameters.run.stop_after_events
+                  << " reached: the run ends at t = " << t << " s" << std::endl;
+              break;
             }
         }
     }

@@ -11,11 +11,12 @@ namespace rsfcycle
   /** Top level: which scene, in which dimension, for how long, where to. */
   struct RunParameters
   {
-    unsigned int dimension        = 2;
-    std::string  scene            = "wedge";
-    double       end_time         = 1000;
-    std::string  output_directory = "output";
-    bool         overwrite_output = false;
+    unsigned int dimension         = 2;
+    std::string  scene             = "wedge";
+    double       end_time          = 1000;
+    unsigned int stop_after_events = 0;
+    std::string  output_directory  = "output";
+    bool         overwrite_output  = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -61,9 +62,10 @@ namespace rsfcycle
     unsigned int max_fixed_point_iterations = 20;
     std::string  linear_correction          = "multigrid";
     unsigned int smoothing_steps            = 3;
-    unsigned int correction_cycles          = 5;
+    unsigned int correction_cycles          = 1;
     double       correction_tolerance       = 1e-2;
     double       tnnmg_tolerance            = 1e-10;
+    double       inner_tolerance_factor     = 0.3;
     unsigned int max_tnnmg_iterations       = 100;
     double       truncation_ratio           = 1e10;
 

@@ -120,7 +120,8 @@ namespace rsfcycle
               if (V <= threshold)
                 {
                   in_event = false;
-                  e.end    = crossing(t_prev, V_prev, t, V);
+                  ++n_ended;
+                  e.end = crossing(t_prev, V_prev, t, V);
                   const double slip_end =
                     slip_prev + (s.slip - slip_prev) * (e.end - t_prev) /
                                   std::max(t - t_prev, 1e-300);
@@ -162,6 +163,18 @@ namespace rsfcycle
           slip_prev = s.slip;
         }
 
+        /** Whether @p stop_after events (0: never) have ended at time t;
+         * if so, say so in the log. */
+        bool
+        events_done(const unsigned int stop_after, const double t) const
+        {
+          if (stop_after == 0 || n_ended < stop_after)
+            return false;
+          log << "*** Stop after events = " << stop_after
+              << " reached: the run ends at t = " << t << " s" << std::endl;
+          return true;
+        }
+
         /** Wall time since construction [s]. */
         double
         wall_time() const
@@ -191,6 +204,7 @@ namespace rsfcycle
         double                                v0, threshold, progress_interval;
         std::ostream                         &log;
         bool                                  in_event      = false;
+        unsigned int                          n_ended       = 0;
         double                                t_prev        = 0;
         double                                V_prev        = 0;
         double                                slip_prev     = 0;
@@ -500,6 +514,8 @@ namespace rsfcycle
                           controller.n_spatial_problems(),
                           end_time,
                           summary);
+          if (recorder.events_done(parameters.run.stop_after_events, t))
+            break;
         }
       summary.final_time           = t;
       summary.final_state          = state;
@@ -687,14 +703,16 @@ namespace rsfcycle
                           end_time,
                           summary);
           t = t_next;
+          if (recorder.events_done(parameters.run.stop_after_events, t))
+            break;
         }
       long int steps = 0;
       if (arkode_memory != nullptr)
         ARKStepGetNumSteps(arkode_memory, &steps);
 
       summary.spatial_problems     = steps; // internal ARKODE steps
-      summary.final_time           = end_time;
-      summary.final_state          = to_state(y, end_time);
+      summary.final_time           = t;
+      summary.final_state          = to_state(y, t);
       summary.final_friction       = friction_coefficient(summary.final_state);
       summary.mean_recurrence_time = mean_recurrence_time(summary.events);
       summary.wall_time            = recorder.wall_time();

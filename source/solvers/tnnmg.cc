@@ -189,6 +189,15 @@ namespace rsfcycle
     TNNMGStatistics
     TNNMG::solve(const SpatialProblem &problem, Vector<double> &v)
     {
+      return solve(problem, v, control.tolerance);
+    }
+
+
+    TNNMGStatistics
+    TNNMG::solve(const SpatialProblem &problem,
+                 Vector<double>       &v,
+                 const double          tolerance)
+    {
       const SparseMatrix<double> &A       = *problem.A;
       const std::vector<bool>    &fixed   = *problem.fixed;
       const ContactSet           &contact = *problem.contact;
@@ -281,7 +290,7 @@ namespace rsfcycle
               stats.converged = false;
               return stats;
             }
-          if (stats.relative_change <= control.tolerance)
+          if (stats.relative_change <= tolerance)
             {
               stats.converged = true;
               return stats;

@@ -53,6 +53,13 @@ namespace rsfcycle
       TNNMGStatistics
       solve(const SpatialProblem &problem, dealii::Vector<double> &v);
 
+      /** As above, with the stopping tolerance @p tolerance instead of the
+       * control's (an inexact solve inside the fixed-point iteration). */
+      TNNMGStatistics
+      solve(const SpatialProblem   &problem,
+            dealii::Vector<double> &v,
+            const double            tolerance);
+
       /**
        * One nonlinear block Gauss-Seidel sweep over all free dofs: a linear
        * update for dofs without friction, the exact node-local friction

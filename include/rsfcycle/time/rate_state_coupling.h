@@ -40,7 +40,9 @@ namespace rsfcycle
      * (a failed velocity solve, a non-finite distance, or no convergence
      * within max_iterations) nothing is returned, and the caller rejects the
      * step. If `last_distance` is given, it receives the distance of the
-     * last fixed-point iteration (for diagnoses).
+     * last fixed-point iteration (for diagnoses). The fixed point is not
+     * accepted before `min_iterations` iterations (2 when the first velocity
+     * solve was inexact, see `Inner tolerance factor`).
      */
     template <typename Velocity,
               typename StateVector,
@@ -57,7 +59,8 @@ namespace rsfcycle
                           SolveVelocity    &&solve_velocity,
                           UpdateState      &&update_state,
                           Distance         &&distance,
-                          double            *last_distance = nullptr)
+                          double            *last_distance  = nullptr,
+                          const unsigned int min_iterations = 1)
     {
       if (coupling == Coupling::explicit_decoupling)
         {
@@ -79,7 +82,7 @@ namespace rsfcycle
           std::swap(alpha, alpha_new);
           if (!std::isfinite(d))
             return {};
-          if (d <= tolerance)
+          if (d <= tolerance && k >= min_iterations)
             return k;
         }
       return {};

@@ -20,7 +20,8 @@ doc/figures/solvers-cost.png the cost
 against N.
 
 Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5,6]
-                                 [--work DIR]
+                                 [--work DIR] [--reuse-preload]
+                                 [--variants multigrid,direct] [--append]
        benchmarks/solvers/run.py --table    (markdown tables of results.csv)
        benchmarks/solvers/run.py --plot     (doc/figures/solvers-cost.png)
 """
@@ -44,11 +45,20 @@ def arg(name, default):
 
 
 BUILD = next((a for a in sys.argv[1:] if not a.startswith("--") and
-              a not in (arg("--depths", ""), arg("--work", ""))),
+              a not in (arg("--depths", ""), arg("--work", ""),
+                        arg("--variants", ""))),
              os.path.join(ROOT, "build"))
 EXE = os.path.join(BUILD, "rsfcycle")
 DEPTHS = [int(d) for d in arg("--depths", "2,3,4,5").split(",")]
 WORK = arg("--work", os.path.join(HERE, "work"))
+# reuse existing preload checkpoints of WORK (same depths, same T0)
+REUSE = "--reuse-preload" in sys.argv
+# AMG is compared on the coarser meshes only (it crawls beyond, see README)
+AMG_MAX_DEPTH = 5
+# --append: keep the rows of results.csv for other depths;
+# --variants a,b: run only these alternatives
+APPEND = "--append" in sys.argv
+ONLY = [v for v in arg("--variants", "").split(",") if v]
 
 
 def base_prm(depth, out, end, extra=""):
@@ -125,19 +135,33 @@ def window(depth, name, entries):
 def main():
     os.makedirs(WORK, exist_ok=True)
     results = []
+    if APPEND:
+        results = [r for r in csv.DictReader(open(os.path.join(HERE,
+                                                               "results.csv")))
+                   if int(r["depth"]) not in DEPTHS]
     for depth in DEPTHS:
         pre = os.path.join(WORK, f"pre-{depth}")
         prm = os.path.join(WORK, f"pre-{depth}.prm")
         open(prm, "w").write(base_prm(depth, pre, T0, """subsection Solver
   set Linear correction = direct
 end"""))
-        t = run([prm], pre + ".log")
-        print(f"depth {depth}: preload to {T0} s in {t:.0f} s", flush=True)
+        if REUSE and os.path.exists(os.path.join(pre, "checkpoint.bin")):
+            print(f"depth {depth}: reusing the preload in {pre}", flush=True)
+        else:
+            t = run([prm], pre + ".log")
+            print(f"depth {depth}: preload to {T0} s in {t:.0f} s",
+                  flush=True)
         variants = {
             "multigrid": {"Linear correction": "multigrid"},
+            # every velocity solve to TNNMG tolerance, 2 cycles per
+            # correction: the settings before the inexact fixed point
+            "multigrid-exact": {"Linear correction": "multigrid",
+                                "Inner tolerance factor": 0,
+                                "Linear correction cycles": 2},
             "direct": {"Linear correction": "direct"},
-            "amg": {"Linear correction": "amg"},
         }
+        if depth <= AMG_MAX_DEPTH:
+            variants["amg"] = {"Linear correction": "amg"}
         if depth == EXPLICIT_DEPTH:
             for d in ["1e-5", "1e-6", "1e-7"]:
                 variants[f"explicit-{d}"] = {"Linear correction": "multigrid",
@@ -145,10 +169,14 @@ end"""))
                                              "Tolerance": d}
             variants["fixed-point-1e-7"] = {"Linear correction": "multigrid",
                                             "Tolerance": "1e-7",
-                                            "Fixed-point tolerance": "1e-7"}
+                                            "Fixed-point tolerance": "1e-7",
+                                            "Inner tolerance factor": 0}
         for name, entries in variants.items():
+            if ONLY and name not in ONLY:
+                continue
             entries = dict(entries)
-            entries.setdefault("Linear correction cycles", 2)
+            entries.setdefault("Linear correction cycles", 1)
+            entries.setdefault("Inner tolerance factor", 0.3)
             entries.setdefault("TNNMG tolerance", "1e-6")
             r = window(depth, name, entries)
             results.append(r)
@@ -195,7 +223,8 @@ def table(rows):
     mg = {r["depth"]: float(r["wall_s"]) for r in rows
           if r["name"] == "multigrid"}
     for r in rows:
-        if r["name"] not in ("multigrid", "direct", "amg"):
+        if r["name"] not in ("multigrid", "multigrid-exact", "direct",
+                             "amg"):
             continue
         print(f"| {r['depth']} | {r['unknowns']} | {r['name']} | "
               f"{r['wall_s']} | {r['steps']} | {r['fp_max']}/{r['fp_mean']} "
@@ -213,7 +242,8 @@ def table(rows):
           "max error of the event starts [ms] |")
     print("|---|---|---|---|---|---|")
     for r in rows:
-        if r["depth"] != depth or r["name"] in ("direct", "amg"):
+        if r["depth"] != depth or r["name"] in ("direct", "amg",
+                                                "multigrid-exact"):
             continue
         t = [float(x) for x in r["event_starts"].split()]
         err = max(abs(a - b) for a, b in zip(t, t_ref)) * 1e3

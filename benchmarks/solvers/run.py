@@ -215,6 +215,8 @@ def plot(results):
     ax[0].set_ylabel(f"wall time of [{T0:g}, {T1:g}] s [s]")
     ax[0].legend()
     ax[1].set_xlabel("unknowns N")
+    ax[1].axhline(16, ls=":", color="k", label="the paper's bound, 16")
+    ax[1].set_yscale("log")
     ax[1].set_ylabel("linear cycles per time step")
     ax[1].legend(fontsize=7)
     fig.tight_layout()

@@ -308,7 +308,6 @@ namespace rsfcycle
         ": allowed are " + solvers::linear_correction_names());
 
     solvers::TNNMGControl tnnmg_control;
-    tnnmg_control.tolerance        = solver.tnnmg_tolerance;
     tnnmg_control.max_iterations   = solver.max_tnnmg_iterations;
     tnnmg_control.truncation_ratio = solver.truncation_ratio;
     tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction, tnnmg_control);

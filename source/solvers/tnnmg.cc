@@ -187,13 +187,6 @@ namespace rsfcycle
 
 
     TNNMGStatistics
-    TNNMG::solve(const SpatialProblem &problem, Vector<double> &v)
-    {
-      return solve(problem, v, control.tolerance);
-    }
-
-
-    TNNMGStatistics
     TNNMG::solve(const SpatialProblem &problem,
                  Vector<double>       &v,
                  const double          tolerance)
@@ -213,7 +206,6 @@ namespace rsfcycle
       hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
 
       TNNMGStatistics stats;
-      double          size = 0; // ||v||_A, once per solve
       for (unsigned int iteration = 0; iteration < control.max_iterations;
            ++iteration)
         {

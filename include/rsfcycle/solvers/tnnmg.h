@@ -12,8 +12,6 @@ namespace rsfcycle
     /** Settings of the TNNMG iteration. */
     struct TNNMGControl
     {
-      /** Stop when ||v_k - v_{k-1}||_A <= tolerance * ||v_k||_A. */
-      double tolerance = 1e-9;
       /** Give up (failure) after this many iterations. */
       unsigned int max_iterations = 100;
       /**
@@ -46,15 +44,12 @@ namespace rsfcycle
       TNNMG(LinearCorrection &correction, const TNNMGControl &control);
 
       /**
-       * Minimise J starting from v (fixed entries must hold their values).
-       * Returns statistics; v holds the last iterate. Non-finite values give
-       * converged = false.
+       * Minimise J starting from v (fixed entries must hold their values),
+       * until ||v_k - v_{k-1}||_A <= tolerance * ||v_k||_A (the caller
+       * chooses it per solve: the inexact fixed point loosens it in early
+       * iterations). Returns statistics; v holds the last iterate.
+       * Non-finite values give converged = false.
        */
-      TNNMGStatistics
-      solve(const SpatialProblem &problem, dealii::Vector<double> &v);
-
-      /** As above, with the stopping tolerance @p tolerance instead of the
-       * control's (an inexact solve inside the fixed-point iteration). */
       TNNMGStatistics
       solve(const SpatialProblem   &problem,
             dealii::Vector<double> &v,

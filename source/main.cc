@@ -10,9 +10,7 @@
 #include <fstream>
 #include <iostream>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/problem_base.h>
-#include <rsfcycle/scenes/scene.h>
-#include <rsfcycle/scenes/spring_slider.h>
+#include <rsfcycle/scenes/registry.h>
 #include <streambuf>
 #include <string>
 
@@ -125,15 +123,17 @@ namespace
     fs::remove(probe);
   }
 
-  /** Returns false if the run was interrupted by a signal. */
-  template <int dim>
+  /**
+   * Build the scene's simulation (bad input fails here, before anything is
+   * written), prepare the run folder and the log, run. Returns false if the
+   * run was interrupted by a signal.
+   */
   bool
   run(const rsfcycle::Parameters &parameters,
       dealii::ParameterHandler   &prm,
       const bool                  resume)
   {
-    const auto scene =
-      rsfcycle::scenes::make_scene<dim>(parameters.run.scene, prm);
+    const auto simulation = rsfcycle::scenes::make_simulation(parameters, prm);
     if (!resume)
       prepare_output_directory(parameters.run.output_directory,
                                parameters.run.overwrite_output);
@@ -141,22 +141,7 @@ namespace
                            resume ? std::ios::app : std::ios::out);
     TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
     std::ostream  log(&tee);
-    rsfcycle::ProblemBase<dim> problem(parameters, *scene, log);
-    return problem.run(prm, resume);
-  }
-
-  /** The spring-slider scene: no mesh, its own time loop (issue 4). */
-  void
-  run_spring_slider(const rsfcycle::Parameters &parameters,
-                    dealii::ParameterHandler   &prm)
-  {
-    rsfcycle::scenes::SpringSlider slider(parameters, prm);
-    prepare_output_directory(parameters.run.output_directory,
-                             parameters.run.overwrite_output);
-    std::ofstream log_file(parameters.run.output_directory + "/log.txt");
-    TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
-    std::ostream  log(&tee);
-    slider.run(prm, log);
+    return simulation->run(prm, log, resume);
   }
 } // namespace
 
@@ -216,16 +201,8 @@ main(int argc, char **argv)
       const bool resume = !resume_dir.empty();
       if (resume)
         parameters.run.output_directory = resume_dir;
-      if (parameters.run.scene == "spring-slider")
-        run_spring_slider(parameters, prm);
-      else
-        {
-          const bool finished = (parameters.run.dimension == 2) ?
-                                  run<2>(parameters, prm, resume) :
-                                  run<3>(parameters, prm, resume);
-          if (!finished)
-            return 130;
-        }
+      if (!run(parameters, prm, resume))
+        return 130;
     }
   catch (std::exception &exc)
     {

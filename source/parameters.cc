@@ -1,5 +1,5 @@
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/scenes/registry.h>
 #include <rsfcycle/solvers/tnnmg.h>
 #include <sstream>
 #include <stdexcept>

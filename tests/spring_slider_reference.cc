@@ -102,10 +102,10 @@ main()
               << yes_no(std::abs(ours.events[i].start -
                                  reference.events[i].start) < 1e-3)
               << ", peak log10(V/v0) = "
-              << std::log10(reference.events[i].peak_rate / v0)
+              << std::log10(reference.events[i].peak_slip_rate / v0)
               << ", peak within 1%: "
-              << yes_no(std::abs(ours.events[i].peak_rate /
-                                   reference.events[i].peak_rate -
+              << yes_no(std::abs(ours.events[i].peak_slip_rate /
+                                   reference.events[i].peak_slip_rate -
                                  1) < 0.01)
               << std::endl;
 }

@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/spring_slider.h>
 #include <sstream>
@@ -70,12 +71,21 @@ main()
       std::ostringstream   log;
       slider.run(prm, log);
 
-      // time, step size, fixed-point iterations, spatial problems, slip
-      // rate, slip, state alpha, friction coefficient
+      // the columns of time-series.csv by name (README "Output")
       std::ifstream                    in("output-" + law + "/time-series.csv");
       std::string                      line;
       std::vector<std::vector<double>> rows;
       std::getline(in, line);
+      std::map<std::string, unsigned int> column;
+      {
+        std::stringstream header(line);
+        std::string       name;
+        while (std::getline(header, name, ','))
+          column.emplace(name, column.size());
+      }
+      const unsigned int time_s = column.at("time_s"),
+                         rate   = column.at("slip_rate_m_per_s"),
+                         mu     = column.at("friction_coefficient");
       while (std::getline(in, line))
         {
           std::vector<double> row;
@@ -93,10 +103,11 @@ main()
           const double t    = t_s + d_over_L * L / V2;
           std::size_t  best = 0;
           for (std::size_t i = 0; i < rows.size(); ++i)
-            if (std::abs(rows[i][0] - t) < std::abs(rows[best][0] - t))
+            if (std::abs(rows[i][time_s] - t) <
+                std::abs(rows[best][time_s] - t))
               best = i;
           const auto  &row = rows[best];
-          const double d   = (row[0] - t_s) * V2 / L; // imposed slip / L
+          const double d   = (row[time_s] - t_s) * V2 / L; // imposed slip / L
           double       alpha_exact;
           if (law == "ageing")
             alpha_exact =
@@ -107,15 +118,15 @@ main()
           const double mu_exact =
             0.6 + a * std::log(V2 / 1e-6) + b * alpha_exact;
           deallog << "  slip " << d_over_L << " L: V/V2 within 0.5%: "
-                  << (std::abs(row[4] / V2 - 1) < 5e-3 ? "yes" : "no")
-                  << ", (mu - mu_ss(V1))/a = " << (row[7] - mu1) / a
+                  << (std::abs(row[rate] / V2 - 1) < 5e-3 ? "yes" : "no")
+                  << ", (mu - mu_ss(V1))/a = " << (row[mu] - mu1) / a
                   << ", closed form " << (mu_exact - mu1) / a
                   << ", |difference| < 0.02: "
-                  << (std::abs(row[7] - mu_exact) / a < 0.02 ? "yes" : "no")
+                  << (std::abs(row[mu] - mu_exact) / a < 0.02 ? "yes" : "no")
                   << std::endl;
         }
       deallog << "  after 20 L: change / ((a - b) log(V2/V1)) = "
-              << (rows.back()[7] - mu1) / ((a - b) * std::log(V2 / V1))
+              << (rows.back()[mu] - mu1) / ((a - b) * std::log(V2 / V1))
               << std::endl;
     }
 }

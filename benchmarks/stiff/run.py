@@ -215,14 +215,14 @@ def run(name, what, end, max_step, p):
         hs = []
         for r in rows:
             try:
-                hs.append(float(r["step size"]))
+                hs.append(float(r["step_size_s"]))
             except ValueError:
                 pass
         if hs:
             hmin, hmax = min(hs), max(hs)
         if rows:
-            slip = rows[-1]["slip"]
-            vmax = max((float(r["slip rate"]) for r in rows),
+            slip = rows[-1]["slip_m"]
+            vmax = max((float(r["slip_rate_m_per_s"]) for r in rows),
                        key=lambda v: (math.isfinite(v), abs(v)))
     fp = re.search(r"max fixed-point iterations (\d+)", out)
     fp = fp.group(1) if fp else "-"

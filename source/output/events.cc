@@ -10,11 +10,44 @@ namespace rsfcycle
   {
     EventDetector::EventDetector(const double        threshold,
                                  const double        convergence_rate,
-                                 std::vector<double> positions)
+                                 std::vector<double> positions,
+                                 const bool          interpolate_times)
       : threshold(threshold)
       , v0(convergence_rate)
       , positions(std::move(positions))
+      , interpolate_times(interpolate_times)
     {}
+
+
+    double
+    EventDetector::crossing(const double t, const double max_rate) const
+    {
+      const double l0 = std::log(std::max(previous_max_rate, 1e-300)),
+                   l1 = std::log(std::max(max_rate, 1e-300)),
+                   lc = std::log(threshold);
+      if (!(std::abs(l1 - l0) > 0))
+        return t;
+      return previous_time +
+             (t - previous_time) * std::clamp((lc - l0) / (l1 - l0), 0., 1.);
+    }
+
+
+    std::vector<std::array<double, 2>>
+    EventDetector::slip_at(const double                              time,
+                           const double                              t,
+                           const std::vector<std::array<double, 2>> &slip) const
+    {
+      if (previous_slip.empty())
+        return slip;
+      std::vector<std::array<double, 2>> result(slip.size());
+      for (unsigned int k = 0; k < slip.size(); ++k)
+        for (unsigned int c = 0; c < 2; ++c)
+          result[k][c] =
+            previous_slip[k][c] + (slip[k][c] - previous_slip[k][c]) *
+                                    (time - previous_time) /
+                                    std::max(t - previous_time, 1e-300);
+      return result;
+    }
 
 
     bool
@@ -28,16 +61,24 @@ namespace rsfcycle
 
       if (!active && max_rate > threshold)
         {
-          active                      = true;
-          running                     = Event();
-          running.start               = t;
-          running.nucleation_position = positions[fastest - rates.begin()];
+          const unsigned int nucleation = fastest - rates.begin();
+          active                        = true;
+          running                       = Event();
+          running.start = interpolate_times ? crossing(t, max_rate) : t;
+          running.nucleation_position = positions[nucleation];
           running.rupture_min         = std::numeric_limits<double>::max();
           running.rupture_max         = std::numeric_limits<double>::lowest();
-          running.recurrence          = (last_start >= 0) ? t - last_start : 0;
-          last_start                  = t;
-          // slip is counted from the last step below the threshold
-          slip_at_start = previous_slip.empty() ? slip : previous_slip;
+          running.recurrence =
+            (last_start >= 0) ? running.start - last_start : 0;
+          last_start = running.start;
+          // slip is counted from the last step below the threshold, or from
+          // the interpolated crossing
+          if (interpolate_times)
+            slip_at_start = slip_at(running.start, t, slip);
+          else
+            slip_at_start = previous_slip.empty() ? slip : previous_slip;
+          running.start_slip = std::hypot(slip_at_start[nucleation][0],
+                                          slip_at_start[nucleation][1]);
         }
 
       if (active)
@@ -53,19 +94,24 @@ namespace rsfcycle
               }
           if (max_rate <= threshold)
             {
-              running.end = t;
+              running.end = interpolate_times ? crossing(t, max_rate) : t;
+              const std::vector<std::array<double, 2>> slip_at_end =
+                interpolate_times ? slip_at(running.end, t, slip) : slip;
               double peak = 0;
               for (unsigned int k = 0; k < slip.size(); ++k)
-                peak = std::max(peak,
-                                std::hypot(slip[k][0] - slip_at_start[k][0],
-                                           slip[k][1] - slip_at_start[k][1]));
+                peak =
+                  std::max(peak,
+                           std::hypot(slip_at_end[k][0] - slip_at_start[k][0],
+                                      slip_at_end[k][1] - slip_at_start[k][1]));
               running.slip = peak - v0 * running.duration();
               catalogue.push_back(running);
               active = false;
               ended  = true;
             }
         }
-      previous_slip = slip;
+      previous_slip     = slip;
+      previous_time     = t;
+      previous_max_rate = max_rate;
       return ended;
     }
 

@@ -1,13 +1,10 @@
-#include <algorithm>
-#include <arkode/arkode_arkstep.h>
-#include <chrono>
 #include <cmath>
-#include <deal.II/lac/vector.h>
-#include <deal.II/sundials/arkode.h>
+#include <deal.II/base/timer.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <rsfcycle/scenes/spring_slider.h>
+#include <rsfcycle/time/run_loop.templates.h>
 #include <rsfcycle/time/step_doubling.h>
 #include <stdexcept>
 
@@ -15,207 +12,15 @@ namespace rsfcycle
 {
   namespace scenes
   {
-    namespace
-    {
-      /** The last lines of a spring-slider run, the same for both integrators.
-       */
-      void
-      print_final(std::ostream &log, const SpringSlider::Summary &summary)
-      {
-        log << "Final: slip = " << std::setprecision(16)
-            << summary.final_state.slip
-            << " m, V = " << summary.final_state.velocity
-            << " m/s, alpha = " << summary.final_state.alpha
-            << ", mu = " << summary.final_friction
-            << ", mean recurrence time = " << summary.mean_recurrence_time
-            << " s" << std::endl;
-        log << "Wall time of the time loop: " << std::setprecision(4)
-            << summary.wall_time << " s" << std::endl;
-      }
-    } // namespace
-
     using dealii::Patterns::Anything;
     using dealii::Patterns::Double;
     using dealii::Patterns::Selection;
 
     namespace
     {
-      /**
-       * Everything a run records per accepted step, shared by the Newmark
-       * scheme and the ARKODE reference: the CSV row, the event detection
-       * (start and end interpolated in log V between two samples, so that
-       * the recurrence time does not depend on the step size more than the
-       * solution does) and the statistics.
-       */
-      class Recorder
-      {
-      public:
-        Recorder(const std::string &dir,
-                 const double       v0,
-                 const double       threshold,
-                 const double       progress_interval,
-                 std::ostream      &log)
-          : series(dir + "/time-series.csv")
-          , events_file(dir + "/events.csv")
-          , v0(v0)
-          , threshold(threshold)
-          , progress_interval(progress_interval)
-          , log(log)
-          , wall_start(std::chrono::steady_clock::now())
-          , last_progress(wall_start)
-        {
-          series << std::setprecision(12)
-                 << "time,step size,fixed-point iterations,spatial problems,"
-                    "slip rate,slip,state alpha,friction coefficient\n";
-          events_file << std::setprecision(12)
-                      << "event,start,end,duration,peak slip rate,slip,"
-                         "recurrence time\n";
-        }
-
-        void
-        record(const double               t,
-               const double               dt,
-               const SpringSlider::State &s,
-               const double               mu,
-               const unsigned int         problems,
-               const double               end_time,
-               SpringSlider::Summary     &summary)
-        {
-          series << t << "," << dt << "," << s.fixed_point_iterations << ","
-                 << problems << "," << s.velocity << "," << s.slip << ","
-                 << s.alpha << "," << mu << "\n";
-          const double V    = std::abs(s.velocity);
-          summary.peak_rate = std::max(summary.peak_rate, V);
-          if (summary.steps > 0)
-            {
-              summary.min_step = std::min(summary.min_step, dt);
-              summary.max_step = std::max(summary.max_step, dt);
-            }
-          else
-            summary.min_step = summary.max_step = dt;
-          ++summary.steps;
-          summary.spatial_problems += problems;
-          summary.max_fixed_point =
-            std::max(summary.max_fixed_point, s.fixed_point_iterations);
-
-          if (!in_event && V > threshold)
-            {
-              in_event = true;
-              SpringSlider::Event e;
-              e.start       = crossing(t_prev, V_prev, t, V);
-              e.peak_rate   = V;
-              slip_at_start = slip_prev + (s.slip - slip_prev) *
-                                            (e.start - t_prev) /
-                                            std::max(t - t_prev, 1e-300);
-              e.start_slip = slip_at_start;
-              summary.events.push_back(e);
-              log << "    event " << summary.events.size()
-                  << " starts at t = " << std::setprecision(8) << e.start
-                  << " s" << std::endl;
-            }
-          else if (in_event)
-            {
-              auto &e     = summary.events.back();
-              e.peak_rate = std::max(e.peak_rate, V);
-              if (V <= threshold)
-                {
-                  in_event = false;
-                  ++n_ended;
-                  e.end = crossing(t_prev, V_prev, t, V);
-                  const double slip_end =
-                    slip_prev + (s.slip - slip_prev) * (e.end - t_prev) /
-                                  std::max(t - t_prev, 1e-300);
-                  e.slip = slip_end - slip_at_start - v0 * (e.end - e.start);
-                  const std::size_t n = summary.events.size();
-                  events_file
-                    << n << "," << e.start << "," << e.end << ","
-                    << e.end - e.start << "," << e.peak_rate << "," << e.slip
-                    << ","
-                    << (n > 1 ? e.start - summary.events[n - 2].start : 0.)
-                    << "\n";
-                }
-            }
-          t_prev    = t;
-          V_prev    = V;
-          slip_prev = s.slip;
-
-          const auto   now = std::chrono::steady_clock::now();
-          const double since =
-            std::chrono::duration<double>(now - last_progress).count();
-          if (since >= progress_interval)
-            {
-              last_progress = now;
-              log << "*** Step " << summary.steps
-                  << ": t = " << std::setprecision(6) << t << " s / "
-                  << end_time << " s, dt = " << dt << " s, V = " << V / v0
-                  << " v0, events = " << summary.events.size() << "\n"
-                  << "    solver: " << s.fixed_point_iterations
-                  << " fixed-point iterations, " << problems
-                  << " spatial problems this step" << std::endl;
-            }
-        }
-
-        void
-        start(const double t, const SpringSlider::State &s)
-        {
-          t_prev    = t;
-          V_prev    = std::abs(s.velocity);
-          slip_prev = s.slip;
-        }
-
-        /** Whether @p stop_after events (0: never) have ended at time t;
-         * if so, say so in the log. */
-        bool
-        events_done(const unsigned int stop_after, const double t) const
-        {
-          if (stop_after == 0 || n_ended < stop_after)
-            return false;
-          log << "*** Stop after events = " << stop_after
-              << " reached: the run ends at t = " << t << " s" << std::endl;
-          return true;
-        }
-
-        /** Wall time since construction [s]. */
-        double
-        wall_time() const
-        {
-          return std::chrono::duration<double>(
-                   std::chrono::steady_clock::now() - wall_start)
-            .count();
-        }
-
-      private:
-        /** Time where V crosses the threshold, linear in log V. */
-        double
-        crossing(const double t0,
-                 const double V0,
-                 const double t1,
-                 const double V1) const
-        {
-          const double l0 = std::log(std::max(V0, 1e-300)),
-                       l1 = std::log(std::max(V1, 1e-300)),
-                       lc = std::log(threshold);
-          if (!(std::abs(l1 - l0) > 0))
-            return t1;
-          return t0 + (t1 - t0) * std::clamp((lc - l0) / (l1 - l0), 0., 1.);
-        }
-
-        std::ofstream                         series, events_file;
-        double                                v0, threshold, progress_interval;
-        std::ostream                         &log;
-        bool                                  in_event      = false;
-        unsigned int                          n_ended       = 0;
-        double                                t_prev        = 0;
-        double                                V_prev        = 0;
-        double                                slip_prev     = 0;
-        double                                slip_at_start = 0;
-        std::chrono::steady_clock::time_point wall_start, last_progress;
-      };
-
-
       /** Mean start-to-start time of the events after the first [s]. */
       double
-      mean_recurrence_time(const std::vector<SpringSlider::Event> &events)
+      mean_recurrence_time(const std::vector<output::Event> &events)
       {
         if (events.size() < 3)
           return 0;
@@ -450,277 +255,104 @@ namespace rsfcycle
     }
 
 
+    time::Layout
+    SpringSlider::layout() const
+    {
+      time::Layout layout;
+      layout.positions               = {0.};
+      layout.observation_names       = {"slip_m",
+                                        "slip_rate_m_per_s",
+                                        "state_alpha",
+                                        "friction_coefficient"};
+      layout.convergence_rate        = v0;
+      layout.interpolate_event_times = true;
+      return layout;
+    }
+
+
+    time::Sample
+    SpringSlider::sample(const State &s) const
+    {
+      time::Sample sample;
+      sample.slip_rates                        = {std::abs(s.velocity)};
+      sample.slip                              = {{{s.slip, 0.}}};
+      sample.observations                      = {s.slip,
+                                                  s.velocity,
+                                                  s.alpha,
+                                                  friction_coefficient(s)};
+      sample.statistics.fixed_point_iterations = s.fixed_point_iterations;
+      return sample;
+    }
+
+
     SpringSlider::Summary
-    SpringSlider::run(const ParameterHandler &prm, std::ostream &log)
+    SpringSlider::run(const ParameterHandler &prm,
+                      std::ostream           &log,
+                      const bool              resume)
     {
       const std::string dir = parameters.run.output_directory;
       std::filesystem::create_directories(dir);
-      {
-        std::ofstream out(dir + "/parameters.prm");
-        prm.print_parameters(out, ParameterHandler::PRM);
-      }
+      if (!resume)
+        {
+          std::ofstream out(dir + "/parameters.prm");
+          prm.print_parameters(out, ParameterHandler::PRM);
+        }
       log << "Scene: spring-slider ("
           << (mass > 0 ? "dynamic" : "quasi-dynamic") << "), integrator "
           << integrator << "\n"
           << "Stiffness k / k_crit = " << stiffness / critical_stiffness()
           << " (k_crit = (b - a) |sigma_n| / L = " << critical_stiffness()
           << " Pa/m)\n";
+      if (integrator != "arkode")
+        log << "Solver: " << parameters.solver.coupling << " coupling, "
+            << parameters.solver.state_law << " law" << std::endl;
+
+      const auto                              &ts = parameters.time_stepping;
+      std::unique_ptr<time::Controller<State>> controller;
       if (integrator == "arkode")
-        return integrate_reference(log);
+        controller = make_arkode_reference(*this, log);
+      else
+        controller = std::make_unique<time::StepDoubling<State>>(
+          [this](const State &s, const double t0, const double dt) {
+            return newmark_step(s, t0, dt);
+          },
+          [](const State &s1, const State &s2) {
+            return std::abs(s1.alpha - s2.alpha);
+          },
+          ts.tolerance,
+          ts.initial_step,
+          ts.minimum_step,
+          ts.maximum_step,
+          ts.adaptive);
 
-      log << "Solver: " << parameters.solver.coupling << " coupling, "
-          << parameters.solver.state_law << " law" << std::endl;
+      dealii::TimerOutput  timer(log,
+                                dealii::TimerOutput::never,
+                                dealii::TimerOutput::wall_times);
+      time::RunLoop<State> loop(parameters, *this, *controller, log, timer);
 
-      const double              end_time = parameters.run.end_time;
-      const auto               &ts       = parameters.time_stepping;
-      time::StepDoubling<State> controller(
-        [this](const State &s, const double t0, const double dt) {
-          return newmark_step(s, t0, dt);
-        },
-        [](const State &s1, const State &s2) {
-          return std::abs(s1.alpha - s2.alpha);
-        },
-        ts.tolerance,
-        ts.initial_step,
-        ts.minimum_step,
-        ts.maximum_step,
-        ts.adaptive);
-
-      Recorder recorder(dir,
-                        v0,
-                        parameters.output.event_threshold * v0,
-                        parameters.output.progress_interval,
-                        log);
-      Summary  summary;
-      State    state = initial_state();
-      double   t     = 0;
-      recorder.start(t, state);
-      log << "*** Time loop to t = " << end_time << " s" << std::endl;
-      while (end_time - t > 1e-10 * end_time)
-        {
-          try
-            {
-              controller.advance(state, t, end_time);
-            }
-          catch (const time::StepSizeUnderflow &e)
-            {
-              log << "Error: at t = " << t << " s: " << e.what() << std::endl;
-              throw;
-            }
-          recorder.record(t,
-                          controller.last_step_size(),
-                          state,
-                          friction_coefficient(state),
-                          controller.n_spatial_problems(),
-                          end_time,
-                          summary);
-          if (recorder.events_done(parameters.run.stop_after_events, t))
-            break;
-        }
-      summary.final_time           = t;
-      summary.final_state          = state;
-      summary.final_friction       = friction_coefficient(state);
+      Summary summary;
+      static_cast<time::RunSummary &>(summary) = loop.run(resume);
+      summary.final_state                      = loop.state();
+      summary.final_friction       = friction_coefficient(loop.state());
       summary.mean_recurrence_time = mean_recurrence_time(summary.events);
-      summary.wall_time            = recorder.wall_time();
-      log << "Summary: " << summary.steps << " steps, "
-          << summary.spatial_problems << " spatial problems, "
-          << summary.events.size() << " events, step size " << summary.min_step
-          << " s to " << summary.max_step << " s, max fixed-point iterations "
-          << summary.max_fixed_point << std::endl;
-      print_final(log, summary);
-      return summary;
-    }
-
-
-    namespace
-    {
-      /** d alpha / dt of the state law at slip rate V >= 0. */
-      double
-      state_rate(const friction::StateLaw    law,
-                 const friction::Parameters &p,
-                 const double                alpha,
-                 const double                V)
-      {
-        if (law == friction::StateLaw::ageing)
-          return p.v_star / p.L * std::exp(-alpha) - V / p.L;
-        return V > 0 ? -V / p.L * (alpha + std::log(V / p.v_star)) : 0.;
-      }
-
-      /**
-       * s = 1/sqrt(1 + z^-2), z = V/(2 V_theta): with it
-       * V dmu/dV = a s and dmu/dalpha = b s (in log space, no overflow).
-       */
-      double
-      friction_sensitivity(const friction::Parameters &p,
-                           const double                alpha,
-                           const double                V)
-      {
-        if (!(V > 0))
-          return 0;
-        const double log_z = std::log(V / 2) - p.log_v_theta(alpha);
-        if (log_z > 300)
-          return 1;
-        return 1 / std::sqrt(1 + std::exp(-2 * log_z));
-      }
-    } // namespace
-
-
-    SpringSlider::Summary
-    SpringSlider::integrate_reference(std::ostream &log)
-    {
-      using VectorType = dealii::Vector<double>;
-      if (cohesion != 0)
-        throw std::invalid_argument(
-          "Spring slider: the ARKODE reference requires Cohesion = 0");
-      const bool   dynamic  = mass > 0;
-      const double end_time = parameters.run.end_time;
-      const double rtol     = parameters.time_stepping.tolerance;
-      log << "ARKODE reference: relative tolerance " << rtol << ", "
-          << (dynamic ? "variables (slip, V, alpha)" :
-                        "variables (slip, log V, alpha)")
+      log << "Final: slip = " << std::setprecision(16)
+          << summary.final_state.slip
+          << " m, V = " << summary.final_state.velocity
+          << " m/s, alpha = " << summary.final_state.alpha
+          << ", mu = " << summary.final_friction
+          << ", mean recurrence time = " << summary.mean_recurrence_time << " s"
           << std::endl;
-
-      // y = (delta, V or log V, alpha); f(t, y) = y'.
-      const auto rate_of = [&](const VectorType &y) {
-        return dynamic ? y[1] : std::exp(y[1]);
-      };
-      const auto f = [&](const double t, const VectorType &y, VectorType &dy) {
-        const double V  = rate_of(y);
-        const double Va = std::abs(V);
-        const double da = state_rate(state_law, friction, y[2], Va);
-        const double mu = friction::friction_coefficient(friction, y[2], Va);
-        const double tau =
-          prestress + stiffness * (load_point_displacement(t) - y[0]);
-        dy[0] = V;
-        dy[2] = da;
-        if (dynamic)
-          dy[1] =
-            (tau - normal_stress * std::copysign(mu, V) - damping * V) / mass;
-        else
-          {
-            // d/dt of tau0 + k(u_lp - delta) = N mu(V, alpha) + eta V
-            const double s = friction_sensitivity(friction, y[2], Va);
-            dy[1]          = (stiffness * (load_point_velocity(t) - V) -
-                     normal_stress * friction.b * s * da) /
-                    (normal_stress * friction.a * s + damping * V);
-          }
-        return std::isfinite(dy[0]) && std::isfinite(dy[1]) &&
-                   std::isfinite(dy[2]) ?
-                 0 :
-                 1;
-      };
-
-      using ARKode = dealii::SUNDIALS::ARKode<VectorType>;
-      typename ARKode::AdditionalData data(0.0,
-                                           end_time,
-                                           1e-6,
-                                           end_time,
-                                           1e-14,
-                                           5,
-                                           20,
-                                           false,
-                                           false,
-                                           false,
-                                           3,
-                                           0.0,
-                                           rtol);
-      ARKode                          ode(data);
-      ode.implicit_function = f;
-      // Jacobian-vector products by finite differences: only the Newton
-      // iteration uses them, not the accuracy of the solution.
-      ode.jacobian_times_vector = [&](const VectorType &v,
-                                      VectorType       &Jv,
-                                      const double      t,
-                                      const VectorType &y,
-                                      const VectorType &fy) {
-        const double norm = v.l2_norm();
-        if (norm == 0)
-          {
-            Jv = 0;
-            return 0;
-          }
-        const double h = 1e-7 * std::max(1., y.l2_norm()) / norm;
-        VectorType   yh(y), fh(y.size());
-        yh.add(h, v);
-        const int err = f(t, yh, fh);
-        for (unsigned int i = 0; i < Jv.size(); ++i)
-          Jv[i] = (fh[i] - fy[i]) / h;
-        return err;
-      };
-      // Absolute tolerances: rtol times the scale of each variable.
-      VectorType abs_tol(3);
-      abs_tol[0]               = rtol * friction.L;
-      abs_tol[1]               = dynamic ? rtol * v0 : rtol;
-      abs_tol[2]               = rtol;
-      ode.get_local_tolerances = [&]() -> VectorType & { return abs_tol; };
-
-      Recorder   recorder(parameters.run.output_directory,
-                        v0,
-                        parameters.output.event_threshold * v0,
-                        parameters.output.progress_interval,
-                        log);
-      Summary    summary;
-      const auto to_state = [&](const VectorType &y, const double t) {
-        State s;
-        s.slip     = y[0];
-        s.velocity = rate_of(y);
-        s.alpha    = y[2];
-        VectorType dy(3);
-        f(t, y, dy);
-        s.acceleration = dynamic ? dy[1] : s.velocity * dy[1];
-        return s;
-      };
-      void *arkode_memory = nullptr;
-      ode.custom_setup    = [&](void *memory) { arkode_memory = memory; };
-
-      // Sample the solution (ARKODE interpolates between its own steps) at
-      // the output period, and densely enough during events to see the
-      // peak: at most (Reference sample spacing) L / V apart.
-      VectorType y(3);
-      y[0]         = 0;
-      y[1]         = dynamic ? initial_rate : std::log(initial_rate);
-      y[2]         = initial_alpha;
-      State  state = to_state(y, 0);
-      double t     = 0;
-      recorder.start(t, state);
-      while (end_time - t > 1e-12 * end_time)
-        {
-          const double dt = std::min(
-            {output_period,
-             sample_spacing > 0 ? sample_spacing * friction.L /
-                                    std::max(std::abs(state.velocity), 1e-300) :
-                                  output_period,
-             end_time - t});
-          const double t_next =
-            (end_time - t - dt < 1e-12 * end_time) ? end_time : t + dt;
-          ode.solve_ode_incrementally(y, t_next);
-          state = to_state(y, t_next);
-          recorder.record(t_next,
-                          t_next - t,
-                          state,
-                          friction_coefficient(state),
-                          0,
-                          end_time,
-                          summary);
-          t = t_next;
-          if (recorder.events_done(parameters.run.stop_after_events, t))
-            break;
-        }
-      long int steps = 0;
-      if (arkode_memory != nullptr)
-        ARKStepGetNumSteps(arkode_memory, &steps);
-
-      summary.spatial_problems     = steps; // internal ARKODE steps
-      summary.final_time           = t;
-      summary.final_state          = to_state(y, t);
-      summary.final_friction       = friction_coefficient(summary.final_state);
-      summary.mean_recurrence_time = mean_recurrence_time(summary.events);
-      summary.wall_time            = recorder.wall_time();
-      log << "Summary: " << steps << " ARKODE steps, " << summary.steps
-          << " output samples, " << summary.events.size() << " events"
-          << std::endl;
-      print_final(log, summary);
+      log << "Wall time of the time loop: " << std::setprecision(4)
+          << summary.wall_time << " s" << std::endl;
       return summary;
     }
   } // namespace scenes
+} // namespace rsfcycle
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    template class RunLoop<scenes::SpringSlider::State>;
+  }
 } // namespace rsfcycle

@@ -2,7 +2,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <rsfcycle/ids.h>
-#include <rsfcycle/scenes/spring_slider.h>
 #include <rsfcycle/scenes/wedge.h>
 
 namespace rsfcycle
@@ -397,36 +396,7 @@ namespace rsfcycle
     }
 
 
-    std::string
-    scene_names()
-    {
-      return "wedge|spring-slider";
-    }
-
-
-    void
-    declare_scene_parameters(ParameterHandler &prm)
-    {
-      Wedge<2>::declare_parameters(prm);
-      SpringSlider::declare_parameters(prm);
-    }
-
-
-    template <int dim>
-    std::unique_ptr<Scene<dim>>
-    make_scene(const std::string &name, ParameterHandler &prm)
-    {
-      if (name == "wedge")
-        return std::make_unique<Wedge<dim>>(prm);
-      throw std::invalid_argument("Scene = " + name + ": allowed are " +
-                                  scene_names());
-    }
-
     template class Wedge<2>;
     template class Wedge<3>;
-    template std::unique_ptr<Scene<2>>
-    make_scene<2>(const std::string &, ParameterHandler &);
-    template std::unique_ptr<Scene<3>>
-    make_scene<3>(const std::string &, ParameterHandler &);
   } // namespace scenes
 } // namespace rsfcycle

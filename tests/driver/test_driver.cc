@@ -16,7 +16,7 @@
 #include <iostream>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/scenes/registry.h>
 #include <rsfcycle/scenes/spring_slider.h>
 #include <sstream>
 
@@ -162,7 +162,7 @@ namespace
         double       peak = 0, min_slip = 1e300, max_slip = 0;
         for (std::size_t i = 1; i < events.size(); ++i)
           {
-            peak     = std::max(peak, events[i].peak_rate);
+            peak     = std::max(peak, events[i].peak_slip_rate);
             min_slip = std::min(min_slip, events[i].slip);
             max_slip = std::max(max_slip, events[i].slip);
           }

@@ -6,12 +6,13 @@
 # checkpoint.bin (state vectors, counters, event detector, step controller
 # with its cached candidate step): the computation is deterministic and the
 # checkpoint holds everything the time loop carries. Also checks that
-# SIGINT stops a run with exit code 130 and a resumable folder.
+# SIGINT stops a run with exit code 130 and a resumable folder. The same
+# for the spring-slider, which runs through the same run loop (issue 12).
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
-make_prm() {
+make_wedge_prm() {
   cat > "$1.prm" <<PRM
 include $src/prm/wedge-2d.prm
 set End time = 250
@@ -26,6 +27,21 @@ subsection Output
 end
 PRM
 }
+# the stick-slip spring-slider at a tight tolerance: long enough (about
+# 10^5 steps) to be killed while it runs
+make_slider_prm() {
+  cat > "$1.prm" <<PRM
+include $src/prm/spring-slider.prm
+set End time = 3000
+set Output directory = $1
+subsection Time stepping
+  set Tolerance = 1e-9
+end
+subsection Output
+  set Checkpoint steps = 2000
+end
+PRM
+}
 fail() { echo "FAILED: $*"; exit 1; }
 # start run $1 in the background (pid in $pid) and wait until it has
 # written a checkpoint and 120 rows
@@ -37,27 +53,32 @@ start_and_wait() {
     sleep 0.05
   done
 }
-for r in a b c; do make_prm $r; done
+check_resume() { # label, prm maker
+  local a=$1-a b=$1-b c=$1-c
+  for r in $a $b $c; do $2 $r; done
 
-"$exe" a.prm > a.log 2>&1 || fail "uninterrupted run"
+  "$exe" $a.prm > $a.log 2>&1 || fail "uninterrupted run"
 
-start_and_wait b
-kill -9 $pid 2>/dev/null || fail "run b ended before it could be killed"
-wait $pid 2>/dev/null
-lines_killed=$(wc -l < b/time-series.csv)
-"$exe" --resume b > b2.log 2>&1 || fail "resume after SIGKILL"
-for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
-  cmp -s a/$f b/$f || fail "$f differs after SIGKILL + resume"
-done
-echo "SIGKILL at $lines_killed rows of time-series.csv, resumed: identical"
+  start_and_wait $b
+  kill -9 $pid 2>/dev/null || fail "run b ended before it could be killed"
+  wait $pid 2>/dev/null
+  lines_killed=$(wc -l < $b/time-series.csv)
+  "$exe" --resume $b > $b-2.log 2>&1 || fail "resume after SIGKILL"
+  for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
+    cmp -s $a/$f $b/$f || fail "$f differs after SIGKILL + resume"
+  done
+  echo "$1: SIGKILL at $lines_killed rows of time-series.csv, resumed: identical"
 
-start_and_wait c
-kill -INT $pid 2>/dev/null || fail "run c ended before SIGINT"
-wait $pid; status=$?
-[ $status -eq 130 ] || fail "SIGINT exit status $status, expected 130"
-grep -q "Continue with: rsfcycle --resume" c.log || fail "no resume hint"
-"$exe" --resume c > c2.log 2>&1 || fail "resume after SIGINT"
-for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
-  cmp -s a/$f c/$f || fail "$f differs after SIGINT + resume"
-done
-echo "SIGINT: exit 130, resumed: identical"
+  start_and_wait $c
+  kill -INT $pid 2>/dev/null || fail "run c ended before SIGINT"
+  wait $pid; status=$?
+  [ $status -eq 130 ] || fail "SIGINT exit status $status, expected 130"
+  grep -q "Continue with: rsfcycle --resume" $c.log || fail "no resume hint"
+  "$exe" --resume $c > $c-2.log 2>&1 || fail "resume after SIGINT"
+  for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
+    cmp -s $a/$f $c/$f || fail "$f differs after SIGINT + resume"
+  done
+  echo "$1: SIGINT: exit 130, resumed: identical"
+}
+check_resume wedge make_wedge_prm
+check_resume slider make_slider_prm

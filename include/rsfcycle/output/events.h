@@ -26,6 +26,8 @@ namespace rsfcycle
       double slip           = 0;      // max over nodes of the slip during the
                                       // event minus v0 * duration [m]
       double recurrence = 0;          // start - previous start [s]; 0 first
+      double start_slip = 0;          // |slip| of the nucleation node at
+                                      // the start [m]
 
       double
       duration() const
@@ -43,7 +45,7 @@ namespace rsfcycle
       serialize(Archive &ar, const unsigned int)
       {
         ar &start &end &nucleation_position &peak_slip_rate &rupture_min
-          &rupture_max &slip &recurrence;
+          &rupture_max &slip &recurrence &start_slip;
       }
     };
 
@@ -52,13 +54,24 @@ namespace rsfcycle
      * displacements of the contact nodes after every accepted step, and
      * keeps the catalogue. Knows nothing about meshes: positions are the
      * nodes' along-base coordinates.
+     *
+     * Event times are those of the accepted steps at which the maximum slip
+     * rate crosses the threshold (doc/events.md), or, with
+     * `interpolate_times`, the times at which it crosses it when log V is
+     * interpolated linearly between the two steps around the crossing; the
+     * slip is then counted between the nodes' displacements interpolated
+     * linearly to those times. The interpolation makes the event times as
+     * accurate as the solution even where the steps are long compared with
+     * the rise of V (the spring-slider against its ARKODE reference, which
+     * is sampled sparsely).
      */
     class EventDetector
     {
     public:
       EventDetector(double              threshold,
                     double              convergence_rate,
-                    std::vector<double> positions);
+                    std::vector<double> positions,
+                    bool                interpolate_times = false);
 
       /**
        * Record the accepted state at time t. `slip` holds the tangential
@@ -118,18 +131,32 @@ namespace rsfcycle
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &threshold &v0 &positions &active &running &previous_slip
-          &slip_at_start &last_start &catalogue;
+        ar &threshold &v0 &positions &interpolate_times &active &running
+          &previous_slip &slip_at_start &last_start &catalogue &previous_time
+            &previous_max_rate;
       }
 
     private:
+      /** Time at which the maximum rate crosses the threshold (log V). */
+      double
+      crossing(double t, double max_rate) const;
+
+      /** The nodes' slip interpolated linearly from the last step to t. */
+      std::vector<std::array<double, 2>>
+      slip_at(double                                    time,
+              double                                    t,
+              const std::vector<std::array<double, 2>> &slip) const;
+
       double                             threshold, v0;
       std::vector<double>                positions;
-      bool                               active = false;
+      bool                               interpolate_times = false;
+      bool                               active            = false;
       Event                              running;
       std::vector<std::array<double, 2>> previous_slip, slip_at_start;
       double                             last_start = -1;
       std::vector<Event>                 catalogue;
+      double                             previous_time     = 0;
+      double                             previous_max_rate = 0;
     };
   } // namespace output
 } // namespace rsfcycle

@@ -30,7 +30,8 @@ namespace rsfcycle
      * generic solver (ExaDG's split of scenario and solver). The geometry is
      * given in the rotated frame of MODEL.md §1: the base (boundary id
      * `contact`) lies in y = 0 and the body above it. Adding a scene never
-     * touches the solver.
+     * touches the solver: it is a class in scenes/ and a line in
+     * scenes/registry.cc.
      */
     template <int dim>
     class Scene
@@ -102,19 +103,6 @@ namespace rsfcycle
         return p[0];
       }
     };
-
-    /** Names of the scenes `make_scene` knows, as a Patterns::Selection. */
-    std::string
-    scene_names();
-
-    /** Declare the parameters of every scene (one subsection each). */
-    void
-    declare_scene_parameters(ParameterHandler &prm);
-
-    /** The scene of the given name, reading its subsection of prm. */
-    template <int dim>
-    std::unique_ptr<Scene<dim>>
-    make_scene(const std::string &name, ParameterHandler &prm);
   } // namespace scenes
 } // namespace rsfcycle
 

@@ -2,11 +2,16 @@
 #define rsfcycle_scenes_spring_slider_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/output/events.h>
 #include <rsfcycle/parameters.h>
+#include <rsfcycle/time/controller.h>
+#include <rsfcycle/time/model.h>
 #include <rsfcycle/time/rate_state_coupling.h>
+#include <rsfcycle/time/run_loop.h>
 #include <vector>
 
 namespace rsfcycle
@@ -14,6 +19,23 @@ namespace rsfcycle
   namespace scenes
   {
     using dealii::ParameterHandler;
+
+    /** The state of the spring-slider's block after a step. */
+    struct SpringSliderState
+    {
+      double       slip                   = 0; // delta [m]
+      double       velocity               = 0; // V [m/s]
+      double       acceleration           = 0; // V' [m/s^2]
+      double       alpha                  = 0; // log(theta V*/L) [-]
+      unsigned int fixed_point_iterations = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &slip &velocity &acceleration &alpha &fixed_point_iterations;
+      }
+    };
 
     /**
      * The spring-slider (issue 4): one block on a rate-and-state base,
@@ -39,52 +61,33 @@ namespace rsfcycle
      * rate/state fixed point (18) or explicit decoupling
      * (time::couple_rate_and_state); the closed-form state update (17);
      * and step doubling (time::StepDoubling) with the distance (14), which
-     * for one node is |alpha1 - alpha2|. It allocates no mesh, no
-     * multigrid and no VTU writer.
+     * for one node is |alpha1 - alpha2|. It advances through the same run
+     * loop (time::RunLoop) and writes the same files as the wedge, with
+     * one contact node at position 0; it allocates no mesh, no multigrid
+     * and no VTU writer. Event times are interpolated in log V between the
+     * steps (output::EventDetector).
      *
      * Alternatively (`Integrator = arkode`) the same ODE is integrated by
      * SUNDIALS ARKODE (implicit, adaptive, relative tolerance = the
-     * step-doubling tolerance), as an independent reference; see
-     * integrate_reference().
+     * step-doubling tolerance), as an independent reference; it is a
+     * time::Controller of the run loop whose steps are ARKODE's samples
+     * (scenes/spring_slider_reference.cc). It writes no checkpoints.
      */
-    class SpringSlider
+    class SpringSlider : public time::Model<SpringSliderState>
     {
     public:
-      /** The state of the block after a step. */
-      struct State
-      {
-        double       slip                   = 0; // delta [m]
-        double       velocity               = 0; // V [m/s]
-        double       acceleration           = 0; // V' [m/s^2]
-        double       alpha                  = 0; // log(theta V*/L) [-]
-        unsigned int fixed_point_iterations = 0;
-      };
+      using State = SpringSliderState;
 
-      /** One event: a maximal interval with V > threshold (MODEL.md §7). */
-      struct Event
+      /**
+       * What a run returns besides its files: the run loop's summary, the
+       * final state and friction, and the mean recurrence time of the
+       * events after the first.
+       */
+      struct Summary : time::RunSummary
       {
-        double start      = 0; // [s], interpolated in log V between steps
-        double start_slip = 0; // slip at the start [m]
-        double end        = 0; // [s]
-        double peak_rate  = 0; // [m/s]
-        double slip       = 0; // slip during the event minus v0 duration [m]
-      };
-
-      /** What a run returns besides its files. */
-      struct Summary
-      {
-        unsigned int       steps                = 0;
-        unsigned long      spatial_problems     = 0;
-        unsigned int       max_fixed_point      = 0;
-        double             min_step             = 0;
-        double             max_step             = 0;
-        double             wall_time            = 0; // [s]
-        double             final_time           = 0;
-        State              final_state          = {};
-        double             final_friction       = 0;
-        std::vector<Event> events               = {};
-        double             mean_recurrence_time = 0; // events 2.. [s]
-        double             peak_rate            = 0; // [m/s]
+        State  final_state          = {};
+        double final_friction       = 0;
+        double mean_recurrence_time = 0; // events 2.. [s]
       };
 
       static void
@@ -94,15 +97,29 @@ namespace rsfcycle
       SpringSlider(const Parameters &parameters, ParameterHandler &prm);
 
       /**
-       * Run to the end time: write parameters.prm, time-series.csv and
-       * events.csv into the output directory, progress and a summary to log.
+       * Run to the end time (or resume from the run folder's checkpoint):
+       * parameters.prm and the files of the run loop in the output
+       * directory, progress and a summary to log.
        */
       Summary
-      run(const ParameterHandler &prm, std::ostream &log);
+      run(const ParameterHandler &prm, std::ostream &log, bool resume = false);
 
       /** The state at t = 0 (initial slip rate and state, slip 0). */
       State
-      initial_state() const;
+      initial_state() const override;
+
+      /** One node at position 0; slip, state and friction columns. */
+      time::Layout
+      layout() const override;
+
+      time::Sample
+      sample(const State &state) const override;
+
+      std::size_t
+      n_unknowns() const override
+      {
+        return 1;
+      }
 
       /**
        * One Newmark step (15) of length tau from the state at time t, with
@@ -133,14 +150,7 @@ namespace rsfcycle
       critical_stiffness() const;
 
     private:
-      /**
-       * The reference: the ODE integrated by ARKODE. Dynamic (m > 0) in the
-       * variables (delta, V, alpha), quasi-dynamic in (delta, log V, alpha),
-       * where V follows from differentiating the force balance. Requires
-       * C = 0 (the cohesion makes the ODE non-smooth at V = 0).
-       */
-      Summary
-      integrate_reference(std::ostream &log);
+      friend class ArkodeReference;
 
       const Parameters    &parameters;
       friction::Parameters friction;
@@ -161,6 +171,20 @@ namespace rsfcycle
       double               output_period;
       double               sample_spacing;
     };
+
+
+    /**
+     * The reference integrator of the spring-slider: the ODE integrated by
+     * SUNDIALS ARKODE, as a time::Controller whose steps are its samples
+     * (`Reference output period`, and at most `Reference sample spacing`
+     * L / V apart). Dynamic (m > 0) in the variables (delta, V, alpha),
+     * quasi-dynamic in (delta, log V, alpha), where V follows from
+     * differentiating the force balance. Requires C = 0 (the cohesion makes
+     * the ODE non-smooth at V = 0). Its spatial problems are ARKODE's
+     * internal steps.
+     */
+    std::unique_ptr<time::Controller<SpringSliderState>>
+    make_arkode_reference(const SpringSlider &slider, std::ostream &log);
   } // namespace scenes
 } // namespace rsfcycle
 

@@ -4,20 +4,13 @@
 #include <algorithm>
 #include <functional>
 #include <optional>
-#include <stdexcept>
+#include <rsfcycle/time/controller.h>
 #include <string>
 
 namespace rsfcycle
 {
   namespace time
   {
-    /** Thrown when the step size would fall below its minimum. */
-    class StepSizeUnderflow : public std::runtime_error
-    {
-    public:
-      using std::runtime_error::runtime_error;
-    };
-
     /**
      * Adaptive time stepping by step doubling (MODEL.md §4.3), generic in
      * the state type so that every scene (wedge, spring-slider) uses the same
@@ -32,7 +25,7 @@ namespace rsfcycle
      * problem (the stepper returns no state) counts as "refine".
      */
     template <typename State>
-    class StepDoubling
+    class StepDoubling : public Controller<State>
     {
     public:
       /** One step of length tau from the given state at time t. */
@@ -62,7 +55,7 @@ namespace rsfcycle
        * Throws StepSizeUnderflow if tau would fall below the minimum.
        */
       void
-      advance(State &current, double &t, const double end_time)
+      advance(State &current, double &t, const double end_time) override
       {
         spatial_problems = 0;
         if (t + tau > end_time * (1 + 1e-12))
@@ -123,14 +116,14 @@ namespace rsfcycle
 
       /** The step size of the last accepted step. */
       double
-      last_step_size() const
+      last_step_size() const override
       {
         return last_step;
       }
 
       /** The current guess for the next step. */
       double
-      step_size() const
+      step_size() const override
       {
         return tau;
       }
@@ -148,8 +141,8 @@ namespace rsfcycle
        * from the current state), if already computed; a checkpoint stores it
        * so that a resumed run repeats the uninterrupted one exactly.
        */
-      const std::optional<State> &
-      candidate() const
+      std::optional<State>
+      candidate() const override
       {
         return r1;
       }
@@ -161,9 +154,16 @@ namespace rsfcycle
         r2.reset();
       }
 
+      void
+      restore(const double step_size, std::optional<State> next) override
+      {
+        tau = step_size;
+        set_candidate(std::move(next));
+      }
+
       /** Spatial problems solved (stepper calls) in the last advance(). */
       unsigned int
-      n_spatial_problems() const
+      n_spatial_problems() const override
       {
         return spatial_problems;
       }

@@ -1,0 +1,112 @@
+#ifndef rsfcycle_friction_contact_quadrature_h
+#define rsfcycle_friction_contact_quadrature_h
+
+#include <array>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+#include <functional>
+#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/solvers/spatial_problem.h>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace friction
+  {
+    using namespace dealii;
+
+    /**
+     * The boundary quadrature of the friction term (MODEL.md §2, the
+     * sinh^-1 dissipation): the contact nodes (the base vertices with a
+     * free tangential component), their lumped (trapezoidal, vertex)
+     * weights w_i condensed onto the non-hanging nodes so that the friction
+     * potential j(v) = sum_i w_i [|sigma_n,i| int_0^|v_i| mu + C |v_i|]
+     * stays node-wise separable (13), the normal force w_i |sigma_n,i| and
+     * the friction parameters of every node, and the quantities defined by
+     * the quadrature: the state distance (14), slip rates, slips.
+     */
+    template <int dim>
+    class ContactQuadrature
+    {
+    public:
+      /** Contact node k: position, lumped weight, normal force. */
+      struct NodeInfo
+      {
+        Point<dim>              position;
+        double                  weight       = 0;
+        double                  normal_force = 0;
+        Parameters              params;
+        types::global_dof_index scalar_dof = 0;
+        types::global_dof_index normal_dof = 0;
+      };
+
+      /**
+       * The contact nodes of the faces with boundary id `contact`, with the
+       * friction parameters given by `parameters_at` at each node's
+       * position. `fixed` marks the dofs that are not unknowns.
+       */
+      void
+      setup(const DoFHandler<dim>           &dof_handler,
+            const DoFHandler<dim>           &scalar_dof_handler,
+            const AffineConstraints<double> &hanging_constraints,
+            const std::vector<bool>         &fixed,
+            const std::function<Parameters(const Point<dim> &)> &parameters_at);
+
+      /**
+       * Normal forces |r_i| from the reaction r = K u - f of the gravity
+       * equilibrium at each node's normal dof. Returns the number of nodes
+       * whose reaction has the opposite sign of the total (tensile).
+       */
+      unsigned int
+      set_normal_forces(const Vector<double> &reaction);
+
+      /** The state distance (14) between two states. */
+      double
+      state_distance(const std::vector<double> &alpha1,
+                     const std::vector<double> &alpha2) const;
+
+      /** Slip rate |v_T| of every contact node. */
+      std::vector<double>
+      slip_rates(const Vector<double> &v) const;
+
+      /** Tangential displacement (up to 2 components) of every node. */
+      std::vector<std::array<double, 2>>
+      tangential_displacement(const Vector<double> &u) const;
+
+      /**
+       * The node potentials phi_i of (13) with the state alpha not yet set;
+       * C the cohesion [Pa].
+       */
+      std::vector<NodePotential>
+      potentials(double cohesion) const;
+
+      const std::vector<NodeInfo> &
+      nodes() const
+      {
+        return node_info;
+      }
+
+      /** The contact dofs per node, for the solvers. */
+      const solvers::ContactSet &
+      contact_set() const
+      {
+        return contact;
+      }
+
+      unsigned int
+      n_nodes() const
+      {
+        return node_info.size();
+      }
+
+    private:
+      solvers::ContactSet   contact;
+      std::vector<NodeInfo> node_info;
+      double                area = 0;
+    };
+  } // namespace friction
+} // namespace rsfcycle
+
+#endif

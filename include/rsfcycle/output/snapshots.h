@@ -1,0 +1,65 @@
+#ifndef rsfcycle_output_snapshots_h
+#define rsfcycle_output_snapshots_h
+
+#include <rsfcycle/friction/contact_quadrature.h>
+#include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/time/newmark_step.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    /**
+     * VTU snapshots of the body (solution.pvd, solution/solution-N.vtu:
+     * displacement, velocity, material and the friction fields on the base) and
+     * of the fault (fault.pvd, fault/fault-N.vtu: the contact faces,
+     * DataOutFaces), with their PVD records kept as members (and in
+     * checkpoints).
+     */
+    template <int dim>
+    class SnapshotWriter
+    {
+    public:
+      SnapshotWriter(const std::string                      &dir,
+                     const physics::Discretisation<dim>     &discretisation,
+                     const friction::ContactQuadrature<dim> &contact,
+                     double                                  convergence_rate);
+
+      /** Write the snapshot of the state at time t. */
+      void
+      write(const BodyState &state, double t);
+
+      /** Time of the last snapshot (-1 if none). */
+      double
+      last_time() const
+      {
+        return records.empty() ? -1. : records.back().first;
+      }
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &n_snapshots &records;
+      }
+
+    private:
+      /** The friction fields on the base as scalar FE vectors. */
+      std::vector<Vector<double>>
+      base_fields(const BodyState &state) const;
+
+      const std::string                       dir;
+      const physics::Discretisation<dim>     &discretisation;
+      const friction::ContactQuadrature<dim> &contact;
+      const double                            v0;
+
+      std::vector<std::pair<double, std::string>> records;
+      unsigned int                                n_snapshots = 0;
+    };
+  } // namespace output
+} // namespace rsfcycle
+
+#endif

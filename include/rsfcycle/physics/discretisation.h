@@ -1,0 +1,133 @@
+#ifndef rsfcycle_physics_discretisation_h
+#define rsfcycle_physics_discretisation_h
+
+#include <array>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <memory>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/scenes/scene.h>
+#include <utility>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace physics
+  {
+    using namespace dealii;
+
+    /**
+     * The discretisation of the Kelvin-Voigt body (MODEL.md §1-2): the
+     * scene's coarse mesh refined toward the seismogenic patch,
+     * FE_Q(1)^dim with its multigrid level dofs and hanging-node
+     * constraints, the mass, viscosity and stiffness matrices M, C, K and
+     * the gravity load (assembled once; cell_matrices() gives the same cell
+     * integrals on the multigrid levels), the Dirichlet dofs, and the step
+     * matrices 2/tau M + C + tau/2 K of the Newmark scheme (15).
+     *
+     * The deal.II objects are public members for reading: the contact
+     * quadrature, the Newmark step, the linear corrections and the writers
+     * all work on them.
+     */
+    template <int dim>
+    class Discretisation
+    {
+    public:
+      Discretisation(const MeshParameters     &mesh,
+                     const scenes::Scene<dim> &scene);
+      ~Discretisation();
+
+      /**
+       * The coarse mesh of the scene, refined globally and then locally
+       * toward the patch; material ids from the cell centres.
+       */
+      void
+      make_grid();
+
+      /** Dofs (active and level), constraints, sparsity, empty matrices. */
+      void
+      setup_system();
+
+      /**
+       * The fixed dofs: backstop (all components), base (the normal
+       * component y), lateral walls (z), hanging nodes.
+       */
+      void
+      setup_boundary_conditions();
+
+      /** M, C, K and the gravity load, with hanging nodes condensed. */
+      void
+      assemble_matrices();
+
+      /**
+       * M, C, K and the gravity load of one cell, active or on a multigrid
+       * level (the material is found from the cell centre).
+       */
+      template <class Iterator>
+      void
+      cell_matrices(const Iterator                    &cell,
+                    FEValues<dim>                     &fe_values,
+                    std::array<FullMatrix<double>, 3> &matrices,
+                    Vector<double>                    &cell_force) const;
+
+      /**
+       * The static equilibrium under gravity with the fixed dofs held at
+       * zero (a frictionless base): the displacement and the reaction
+       * K u - f (whose base normal components are the normal forces).
+       * Throws if the matrices or the load are not finite.
+       */
+      std::pair<Vector<double>, Vector<double>>
+      gravity_equilibrium() const;
+
+      /** Prescribed values of the fixed dofs at time t (backstop). */
+      void
+      set_fixed_values(Vector<double> &v, double t) const;
+
+      /**
+       * The step matrix A = 2/tau M + C + tau/2 K (quasi-static: without
+       * M), kept for the last few step sizes.
+       */
+      const SparseMatrix<double> &
+      step_matrix(double tau, bool dynamic);
+
+      /** For every FE dof, its vector component. */
+      std::vector<unsigned int>
+      dof_components() const;
+
+      Triangulation<dim>        triangulation;
+      FESystem<dim>             fe;
+      DoFHandler<dim>           dof_handler;
+      FE_Q<dim>                 scalar_fe;
+      DoFHandler<dim>           scalar_dof_handler;
+      AffineConstraints<double> hanging_constraints;
+      AffineConstraints<double> scalar_constraints;
+
+      SparsityPattern      sparsity_pattern;
+      SparseMatrix<double> mass_matrix, viscosity_matrix, stiffness_matrix;
+      Vector<double>       body_force;
+
+      /** Dofs whose value is prescribed (Dirichlet, hanging nodes). */
+      std::vector<bool> fixed;
+      /** Backstop dofs with their component (inhomogeneous Dirichlet). */
+      std::vector<std::pair<types::global_dof_index, unsigned int>>
+        backstop_dofs;
+
+    private:
+      const MeshParameters     &mesh;
+      const scenes::Scene<dim> &scene;
+
+      std::vector<std::pair<double, std::unique_ptr<SparseMatrix<double>>>>
+        step_matrices;
+    };
+  } // namespace physics
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,64 @@
+#ifndef rsfcycle_scenes_registry_h
+#define rsfcycle_scenes_registry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <memory>
+#include <ostream>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/scenes/scene.h>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    using dealii::ParameterHandler;
+
+    /**
+     * The scenes by name (a plain name-to-factory map, STYLE.md "Named
+     * choices"). A new scene is a class in scenes/ and one line in each
+     * function of scenes/registry.cc; nothing outside scenes/ changes.
+     */
+
+    /** Names of the scenes, as a Patterns::Selection. */
+    std::string
+    scene_names();
+
+    /** Declare the parameters of every scene (one subsection each). */
+    void
+    declare_scene_parameters(ParameterHandler &prm);
+
+    /**
+     * The continuum scene (geometry, materials, friction) of the given name,
+     * reading its subsection of prm; run by ProblemBase.
+     */
+    template <int dim>
+    std::unique_ptr<Scene<dim>>
+    make_scene(const std::string &name, ParameterHandler &prm);
+
+    /** A configured run of one scene, built before anything is written. */
+    class Simulation
+    {
+    public:
+      virtual ~Simulation() = default;
+
+      /**
+       * Run the scene (or resume it from the checkpoint in its run folder),
+       * writing into the run folder and to log. Returns false if the run
+       * was interrupted by SIGINT/SIGTERM.
+       */
+      virtual bool
+      run(const ParameterHandler &prm, std::ostream &log, bool resume) = 0;
+    };
+
+    /**
+     * The simulation of `Scene` in `Dimension`: the continuum scenes through
+     * ProblemBase, the spring-slider on its own (no mesh). Bad parameters
+     * throw std::invalid_argument here, before the run folder is touched.
+     */
+    std::unique_ptr<Simulation>
+    make_simulation(const Parameters &parameters, ParameterHandler &prm);
+  } // namespace scenes
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,149 @@
+#ifndef rsfcycle_time_newmark_step_h
+#define rsfcycle_time_newmark_step_h
+
+#include <deal.II/lac/vector.h>
+#include <functional>
+#include <optional>
+#include <rsfcycle/friction/contact_quadrature.h>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/solvers/tnnmg.h>
+#include <rsfcycle/time/model.h>
+#include <string>
+#include <vector>
+
+namespace rsfcycle
+{
+  using dealii::SparseMatrix;
+  using dealii::Vector;
+  namespace types = dealii::types;
+
+  /**
+   * The state of the body at one time: displacement, velocity, acceleration
+   * (all dofs) and the friction state alpha = log(theta V* / L) per contact
+   * node, with what the step that produced it cost.
+   */
+  struct BodyState
+  {
+    Vector<double>       u, v, a;
+    std::vector<double>  alpha;
+    std::vector<double>  shear_traction; // |friction force| / w per node [Pa]
+    time::StepStatistics statistics;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &u &v &a &alpha &shear_traction &statistics;
+    }
+  };
+
+  namespace time
+  {
+    /**
+     * One Newmark step (15) of the continuum with the rate/state coupling
+     * (18) of time/rate_state_coupling.h, whose velocity solves are TNNMG:
+     * theta^0 = theta_{n-1}; v^k = TNNMG solution with theta^{k-1};
+     * theta^k from (17) with V = |(v_{n-1} + v^k)/2|; stop at
+     * d(theta^k, theta^{k-1}) <= epsilon. With explicit coupling, the state
+     * is updated once from V = |v_{n-1}| and one spatial problem is solved.
+     * A failed step (no convergence, non-finite values) returns nothing and
+     * leaves a diagnosis in last_failure().
+     */
+    template <int dim>
+    class NewmarkStep
+    {
+    public:
+      /**
+       * `along_base` gives the position along the base [m] that diagnoses
+       * name; C the cohesion [Pa].
+       */
+      NewmarkStep(const SolverParameters                 &solver,
+                  physics::Discretisation<dim>           &discretisation,
+                  const friction::ContactQuadrature<dim> &contact,
+                  solvers::TNNMG                         &tnnmg,
+                  double                                  cohesion,
+                  std::function<double(const dealii::Point<dim> &)> along_base);
+
+      /** The step of length tau from state `old` at time t. */
+      std::optional<BodyState>
+      operator()(const BodyState &old, double t, double tau);
+
+      /**
+       * Iterations of all spatial problems since the last call, then
+       * reset.
+       */
+      StepStatistics
+      take_work();
+
+      /** Why the last step failed. */
+      const std::string &
+      last_failure() const
+      {
+        return failure;
+      }
+
+    private:
+      /** r = f - K (u + tau/2 v) (+ M (2/tau v + a), dynamic). */
+      Vector<double>
+      right_hand_side(const BodyState &old, double tau) const;
+
+      /**
+       * The rate/state coupling for the step: v and alpha of `next`; false
+       * on failure.
+       */
+      bool
+      couple(const BodyState                      &old,
+             const solvers::SpatialProblem        &problem,
+             std::vector<friction::NodePotential> &potentials,
+             double                                t,
+             double                                tau,
+             BodyState                            &next);
+
+      /**
+       * The state update (17) of every node over the step tau from the old
+       * state, with the velocity (1 - weight_new) v_old + weight_new v_new.
+       */
+      void
+      update_states(const BodyState      &old,
+                    const Vector<double> &v_new,
+                    double                weight_new,
+                    double                tau,
+                    std::vector<double>  &alpha) const;
+
+      /** The diagnosis of a TNNMG solve that failed. */
+      std::string
+      tnnmg_failure(const solvers::TNNMGStatistics &stats,
+                    double                          t,
+                    double                          tau,
+                    unsigned int                    k,
+                    const Vector<double>           &v) const;
+
+      /** u, a, the shear traction and the finiteness checks of `next`. */
+      bool
+      complete(const BodyState            &old,
+               const SparseMatrix<double> &A,
+               const Vector<double>       &rhs,
+               double                      t,
+               double                      tau,
+               BodyState                  &next);
+
+      /** Where the first non-finite velocity is (for diagnoses). */
+      std::string
+      first_non_finite(const Vector<double> &v) const;
+
+      const SolverParameters                           &solver;
+      physics::Discretisation<dim>                     &discretisation;
+      const friction::ContactQuadrature<dim>           &contact;
+      solvers::TNNMG                                   &tnnmg;
+      const double                                      cohesion;
+      const friction::StateLaw                          state_law;
+      std::function<double(const dealii::Point<dim> &)> along_base;
+
+      StepStatistics work;
+      std::string    failure;
+    };
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

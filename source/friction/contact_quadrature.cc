@@ -1,0 +1,171 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <map>
+#include <rsfcycle/friction/contact_quadrature.h>
+#include <rsfcycle/ids.h>
+
+namespace rsfcycle
+{
+  namespace friction
+  {
+    template <int dim>
+    void
+    ContactQuadrature<dim>::setup(
+      const DoFHandler<dim>                               &dof_handler,
+      const DoFHandler<dim>                               &scalar_dof_handler,
+      const AffineConstraints<double>                     &hanging_constraints,
+      const std::vector<bool>                             &fixed,
+      const std::function<Parameters(const Point<dim> &)> &parameters_at)
+    {
+      const auto                          &fe = dof_handler.get_fe();
+      Vector<double>                       weights(dof_handler.n_dofs());
+      const QTrapezoid<dim - 1>            trapezoid;
+      FEFaceValues<dim>                    fe_face(fe,
+                                trapezoid,
+                                update_values | update_JxW_values);
+      std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      struct BaseVertex
+      {
+        Point<dim>              position;
+        types::global_dof_index scalar_dof, normal_dof, lateral_dof;
+      };
+      std::map<types::global_dof_index, BaseVertex> base_vertices; // by x dof
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto face = cell->face(f);
+            if (!face->at_boundary() ||
+                face->boundary_id() != boundary_id::contact)
+              continue;
+            const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
+              &dof_handler.get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &scalar_dof_handler);
+            for (const unsigned int v : face->vertex_indices())
+              base_vertices[face->vertex_dof_index(v, 0)] = {
+                face->vertex(v),
+                scalar_cell->face(f)->vertex_dof_index(v, 0),
+                face->vertex_dof_index(v, 1),
+                face->vertex_dof_index(v, dim - 1)};
+            fe_face.reinit(cell, f);
+            cell->get_dof_indices(dof_indices);
+            for (const unsigned int i : fe_face.dof_indices())
+              if (fe.system_to_component_index(i).first == 0)
+                for (const unsigned int q : fe_face.quadrature_point_indices())
+                  weights[dof_indices[i]] +=
+                    fe_face.shape_value_component(i, q, 0) * fe_face.JxW(q);
+          }
+      hanging_constraints.condense(weights);
+
+      // Contact nodes: base vertices with a free tangential component.
+      contact.nodes.clear();
+      node_info.clear();
+      area = 0;
+      for (const auto &[x_dof, vertex] : base_vertices)
+        {
+          if (hanging_constraints.is_constrained(x_dof))
+            continue;
+          solvers::ContactNode                 node;
+          std::vector<types::global_dof_index> tangential = {x_dof};
+          if (dim == 3)
+            tangential.push_back(vertex.lateral_dof);
+          for (const auto dof : tangential)
+            if (!fixed[dof])
+              node.dofs[node.n_dofs++] = dof;
+          if (node.n_dofs == 0)
+            continue;
+          NodeInfo info;
+          info.position   = vertex.position;
+          info.weight     = weights[x_dof];
+          info.params     = parameters_at(vertex.position);
+          info.scalar_dof = vertex.scalar_dof;
+          info.normal_dof = vertex.normal_dof;
+          contact.nodes.push_back(node);
+          node_info.push_back(info);
+          area += info.weight;
+        }
+      contact.build_index(dof_handler.n_dofs());
+    }
+
+
+    template <int dim>
+    unsigned int
+    ContactQuadrature<dim>::set_normal_forces(const Vector<double> &reaction)
+    {
+      unsigned int n_tensile = 0;
+      double       total     = 0;
+      for (const auto &info : node_info)
+        total += reaction[info.normal_dof];
+      for (auto &info : node_info)
+        {
+          const double r    = reaction[info.normal_dof];
+          info.normal_force = std::abs(r);
+          if (r * total < 0)
+            ++n_tensile;
+        }
+      return n_tensile;
+    }
+
+
+    template <int dim>
+    double
+    ContactQuadrature<dim>::state_distance(
+      const std::vector<double> &alpha1,
+      const std::vector<double> &alpha2) const
+    {
+      double sum = 0;
+      for (unsigned int k = 0; k < alpha1.size(); ++k)
+        {
+          const double d = alpha1[k] - alpha2[k];
+          sum += node_info[k].weight * d * d;
+        }
+      return std::sqrt(sum / area);
+    }
+
+
+    template <int dim>
+    std::vector<double>
+    ContactQuadrature<dim>::slip_rates(const Vector<double> &v) const
+    {
+      std::vector<double> rates(contact.nodes.size());
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        rates[k] = solvers::tangential_norm(contact.nodes[k], v);
+      return rates;
+    }
+
+
+    template <int dim>
+    std::vector<std::array<double, 2>>
+    ContactQuadrature<dim>::tangential_displacement(
+      const Vector<double> &u) const
+    {
+      std::vector<std::array<double, 2>> slip(contact.nodes.size(), {{0., 0.}});
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
+          slip[k][l] = u[contact.nodes[k].dofs[l]];
+      return slip;
+    }
+
+
+    template <int dim>
+    std::vector<NodePotential>
+    ContactQuadrature<dim>::potentials(const double cohesion) const
+    {
+      std::vector<NodePotential> result(node_info.size());
+      for (unsigned int k = 0; k < node_info.size(); ++k)
+        {
+          result[k].params         = node_info[k].params;
+          result[k].normal_force   = node_info[k].normal_force;
+          result[k].cohesion_force = node_info[k].weight * cohesion;
+        }
+      return result;
+    }
+
+
+    template class ContactQuadrature<2>;
+    template class ContactQuadrature<3>;
+  } // namespace friction
+} // namespace rsfcycle

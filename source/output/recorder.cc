@@ -1,0 +1,150 @@
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <rsfcycle/output/recorder.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    Recorder::Recorder(const std::string  &dir,
+                       const time::Layout &layout,
+                       const bool          resume,
+                       const FileSizes    &sizes)
+    {
+      // Node order of the profile: along the base, then (3D) by z.
+      const auto        &s = layout.positions;
+      const auto        &z = layout.lateral_positions;
+      const unsigned int n = s.size();
+      order.resize(n);
+      for (unsigned int k = 0; k < n; ++k)
+        order[k] = k;
+      std::sort(order.begin(), order.end(), [&](unsigned int i, unsigned j) {
+        if (s[i] != s[j])
+          return s[i] < s[j];
+        return !z.empty() && z[i] < z[j];
+      });
+
+      const std::string files[3] = {dir + "/time-series.csv",
+                                    dir + "/base-profile.csv",
+                                    dir + "/events.csv"};
+      if (resume)
+        {
+          // drop what was written after the checkpoint, then append
+          std::filesystem::resize_file(files[0], sizes.series);
+          std::filesystem::resize_file(files[1], sizes.profile);
+          std::filesystem::resize_file(files[2], sizes.catalogue);
+          series.open(files[0], std::ios::app);
+          profile.open(files[1], std::ios::app);
+          catalogue.open(files[2], std::ios::app);
+        }
+      else
+        {
+          series.open(files[0]);
+          profile.open(files[1]);
+          catalogue.open(files[2]);
+        }
+      for (unsigned int i = 0; i < 3; ++i)
+        if (!(i == 0 ? series : i == 1 ? profile : catalogue))
+          throw std::runtime_error("cannot open " + files[i] + " for writing");
+      if (!resume)
+        write_headers(layout);
+      series << std::setprecision(10);
+      profile << std::setprecision(8);
+    }
+
+
+    void
+    Recorder::write_headers(const time::Layout &layout)
+    {
+      series << "time_s,step_size_s,fixed_point_iterations,tnnmg_iterations,"
+                "linear_iterations,spatial_problems,max_slip_rate_m_per_s";
+      for (const auto &name : layout.observation_names)
+        series << "," << name;
+      series << ",all_tnnmg_iterations,all_linear_iterations\n";
+
+      const bool lateral = !layout.lateral_positions.empty();
+      profile << "# slip rate [m/s] of the contact nodes; first row: "
+                 "position along the base [m]"
+              << (lateral ? " (then the z coordinate in the second row)" : "")
+              << "\n"
+              << "time_s";
+      for (const unsigned int k : order)
+        profile << "," << layout.positions[k];
+      profile << "\n";
+      if (lateral)
+        {
+          profile << "z_m";
+          for (const unsigned int k : order)
+            profile << "," << layout.lateral_positions[k];
+          profile << "\n";
+        }
+      catalogue << EventDetector::csv_header() << "\n";
+    }
+
+
+    void
+    Recorder::write_step(const double                t,
+                         const double                step_size,
+                         const time::Sample         &sample,
+                         const unsigned int          spatial_problems,
+                         const time::StepStatistics &work)
+    {
+      const auto fastest =
+        std::max_element(sample.slip_rates.begin(), sample.slip_rates.end());
+      const double max_rate =
+        (fastest == sample.slip_rates.end()) ? 0. : *fastest;
+      const auto &counts = sample.statistics;
+      series << t << "," << step_size << "," << counts.fixed_point_iterations
+             << "," << counts.tnnmg_iterations << ","
+             << counts.linear_iterations << "," << spatial_problems << ","
+             << max_rate;
+      for (const double value : sample.observations)
+        series << "," << value;
+      // the work of every spatial problem solved for this step, the
+      // controller's comparisons and rejected attempts included
+      series << "," << work.tnnmg_iterations << "," << work.linear_iterations
+             << "\n";
+    }
+
+
+    void
+    Recorder::write_profile(const double t, const std::vector<double> &rates)
+    {
+      profile << t;
+      for (const unsigned int k : order)
+        profile << "," << rates[k];
+      profile << "\n";
+    }
+
+
+    void
+    Recorder::write_event(const unsigned int index, const Event &event)
+    {
+      EventDetector::write_csv_row(catalogue, index, event);
+      catalogue.flush();
+    }
+
+
+    void
+    Recorder::flush()
+    {
+      series.flush();
+      profile.flush();
+      catalogue.flush();
+    }
+
+
+    FileSizes
+    Recorder::sizes()
+    {
+      flush();
+      FileSizes sizes;
+      sizes.series    = series.tellp();
+      sizes.profile   = profile.tellp();
+      sizes.catalogue = catalogue.tellp();
+      return sizes;
+    }
+  } // namespace output
+} // namespace rsfcycle

@@ -1,0 +1,215 @@
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_out_faces.h>
+#include <fstream>
+#include <rsfcycle/ids.h>
+#include <rsfcycle/output/snapshots.h>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      /** DataOutFaces restricted to the faces of one boundary (the fault). */
+      template <int dim>
+      class BoundaryFaces : public DataOutFaces<dim>
+      {
+      public:
+        using FaceDescriptor = typename DataOutFaces<dim>::FaceDescriptor;
+
+        explicit BoundaryFaces(const types::boundary_id id)
+          : id(id)
+        {}
+
+        FaceDescriptor
+        first_face() override
+        {
+          for (const auto &cell : this->triangulation->active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (is_selected(cell, f))
+                return {cell, f};
+          return {};
+        }
+
+        FaceDescriptor
+        next_face(const FaceDescriptor &face) override
+        {
+          auto         cell = face.first;
+          unsigned int f    = face.second + 1;
+          while (cell != this->triangulation->end())
+            {
+              for (; f < cell->n_faces(); ++f)
+                if (is_selected(cell, f))
+                  return {cell, f};
+              ++cell;
+              while (cell != this->triangulation->end() && !cell->is_active())
+                ++cell;
+              f = 0;
+            }
+          return {};
+        }
+
+      private:
+        bool
+        is_selected(const typename Triangulation<dim>::cell_iterator &cell,
+                    const unsigned int                                f) const
+        {
+          return cell->is_active() && cell->face(f)->at_boundary() &&
+                 cell->face(f)->boundary_id() == id;
+        }
+
+        const types::boundary_id id;
+      };
+
+      /** The base fields in the order of SnapshotWriter::base_fields(). */
+      enum Field
+      {
+        slip_rate,
+        log_slip_rate,
+        theta,
+        mu,
+        traction,
+        normal_stress,
+        rate_minus_v0,
+        slip_um,
+        n_fields
+      };
+    } // namespace
+
+
+    template <int dim>
+    SnapshotWriter<dim>::SnapshotWriter(
+      const std::string                      &dir,
+      const physics::Discretisation<dim>     &discretisation,
+      const friction::ContactQuadrature<dim> &contact,
+      const double                            convergence_rate)
+      : dir(dir)
+      , discretisation(discretisation)
+      , contact(contact)
+      , v0(convergence_rate)
+    {}
+
+
+    template <int dim>
+    std::vector<Vector<double>>
+    SnapshotWriter<dim>::base_fields(const BodyState &state) const
+    {
+      std::vector<Vector<double>> field(
+        n_fields, Vector<double>(discretisation.scalar_dof_handler.n_dofs()));
+      field[log_slip_rate]            = std::log10(1e-20);
+      const auto               &nodes = contact.nodes();
+      const std::vector<double> rates = contact.slip_rates(state.v);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          const auto &info      = nodes[k];
+          const auto  dof       = info.scalar_dof;
+          field[slip_rate][dof] = rates[k];
+          field[log_slip_rate][dof] =
+            std::log10(std::max(rates[k] / v0, 1e-20));
+          field[theta][dof] =
+            info.params.L / info.params.v_star * std::exp(state.alpha[k]);
+          field[mu][dof]       = friction::friction_coefficient(info.params,
+                                                          state.alpha[k],
+                                                          rates[k]);
+          field[traction][dof] = state.shear_traction[k];
+          field[normal_stress][dof] = info.normal_force / info.weight;
+          field[rate_minus_v0][dof] = rates[k] - v0;
+          field[slip_um][dof] =
+            1e6 *
+            solvers::tangential_norm(contact.contact_set().nodes[k], state.u);
+        }
+      for (const Field f : {slip_rate,
+                            theta,
+                            mu,
+                            traction,
+                            normal_stress,
+                            rate_minus_v0,
+                            slip_um})
+        discretisation.scalar_constraints.distribute(field[f]);
+      return field;
+    }
+
+
+    template <int dim>
+    void
+    SnapshotWriter<dim>::write(const BodyState &state, const double t)
+    {
+      const std::vector<Vector<double>> field = base_fields(state);
+      const auto &scalar_dofs = discretisation.scalar_dof_handler;
+
+      DataOut<dim> data_out;
+      data_out.attach_dof_handler(discretisation.dof_handler);
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+        vector_part(dim,
+                    DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(state.u,
+                               std::vector<std::string>(dim, "displacement"),
+                               DataOut<dim>::type_dof_data,
+                               vector_part);
+      data_out.add_data_vector(state.v,
+                               std::vector<std::string>(dim, "velocity"),
+                               DataOut<dim>::type_dof_data,
+                               vector_part);
+      data_out.add_data_vector(scalar_dofs, field[slip_rate], "slip_rate");
+      data_out.add_data_vector(scalar_dofs,
+                               field[log_slip_rate],
+                               "log10_slip_rate_over_v0");
+      data_out.add_data_vector(scalar_dofs, field[theta], "state");
+      data_out.add_data_vector(scalar_dofs, field[mu], "friction_coefficient");
+      data_out.add_data_vector(scalar_dofs, field[traction], "shear_traction");
+      data_out.add_data_vector(scalar_dofs,
+                               field[normal_stress],
+                               "normal_stress");
+      const auto   &tria = discretisation.triangulation;
+      Vector<float> material(tria.n_active_cells());
+      for (const auto &cell : tria.active_cell_iterators())
+        material[cell->active_cell_index()] = cell->material_id();
+      data_out.add_data_vector(material, "material_id");
+      data_out.build_patches();
+
+      DataOutBase::VtkFlags flags;
+      flags.time  = t;
+      flags.cycle = n_snapshots;
+      data_out.set_flags(flags);
+      const std::string number = Utilities::int_to_string(n_snapshots, 5);
+      const std::string name   = "solution-" + number + ".vtu";
+      std::ofstream     vtu(dir + "/solution/" + name);
+      data_out.write_vtu(vtu);
+      records.emplace_back(t, "solution/" + name);
+      std::ofstream pvd(dir + "/solution.pvd");
+      DataOutBase::write_pvd_record(pvd, records);
+
+      // The fault (contact faces) at the same times: fault/fault-NNNNN.vtu,
+      // fault.pvd (the paper's figure 9 draws isolines of V - v0 on it).
+      BoundaryFaces<dim> fault(boundary_id::contact);
+      fault.attach_dof_handler(scalar_dofs);
+      fault.add_data_vector(field[rate_minus_v0], "slip_rate_minus_v0");
+      fault.add_data_vector(field[log_slip_rate], "log10_slip_rate_over_v0");
+      fault.add_data_vector(field[theta], "state");
+      fault.add_data_vector(field[slip_um], "slip_um");
+      fault.add_data_vector(field[traction], "shear_traction");
+      fault.add_data_vector(field[mu], "friction_coefficient");
+      fault.build_patches();
+      fault.set_flags(flags);
+      std::ofstream fault_vtu(dir + "/fault/fault-" + number + ".vtu");
+      fault.write_vtu(fault_vtu);
+      std::vector<std::pair<double, std::string>> fault_records;
+      for (unsigned int i = 0; i < records.size(); ++i)
+        fault_records.emplace_back(records[i].first,
+                                   "fault/fault-" +
+                                     Utilities::int_to_string(i, 5) + ".vtu");
+      std::ofstream fault_pvd(dir + "/fault.pvd");
+      DataOutBase::write_pvd_record(fault_pvd, fault_records);
+      ++n_snapshots;
+    }
+
+
+    template class SnapshotWriter<2>;
+    template class SnapshotWriter<3>;
+  } // namespace output
+} // namespace rsfcycle

@@ -1,0 +1,339 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <rsfcycle/ids.h>
+#include <rsfcycle/physics/discretisation.h>
+#include <stdexcept>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace physics
+  {
+    template <int dim>
+    Discretisation<dim>::Discretisation(const MeshParameters     &mesh,
+                                        const scenes::Scene<dim> &scene)
+      : triangulation(Triangulation<dim>::limit_level_difference_at_vertices)
+      , fe(FE_Q<dim>(1), dim)
+      , dof_handler(triangulation)
+      , scalar_fe(1)
+      , scalar_dof_handler(triangulation)
+      , mesh(mesh)
+      , scene(scene)
+    {}
+
+
+    template <int dim>
+    Discretisation<dim>::~Discretisation()
+    {
+      dof_handler.clear();
+      scalar_dof_handler.clear();
+    }
+
+
+    /**
+     * In every local cycle the cells whose centre is closer to the patch
+     * than `Refinement distance` times their diameter are refined, so the
+     * refined zone shrinks with the level and the patch gets the finest
+     * cells.
+     */
+    template <int dim>
+    void
+    Discretisation<dim>::make_grid()
+    {
+      scene.create_coarse_mesh(triangulation);
+      triangulation.refine_global(mesh.global_refinements);
+      for (unsigned int cycle = 0; cycle < mesh.local_refinements; ++cycle)
+        {
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (scene.distance_to_patch(cell->center()) <
+                mesh.refinement_distance * cell->diameter())
+              cell->set_refine_flag();
+          triangulation.execute_coarsening_and_refinement();
+        }
+      for (const auto &cell : triangulation.active_cell_iterators())
+        cell->set_material_id(scene.material_id(cell->center()));
+    }
+
+
+    template <int dim>
+    void
+    Discretisation<dim>::setup_system()
+    {
+      dof_handler.distribute_dofs(fe);
+      dof_handler.distribute_mg_dofs();
+      scalar_dof_handler.distribute_dofs(scalar_fe);
+
+      hanging_constraints.clear();
+      DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+      hanging_constraints.close();
+      scalar_constraints.clear();
+      DoFTools::make_hanging_node_constraints(scalar_dof_handler,
+                                              scalar_constraints);
+      scalar_constraints.close();
+
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      dsp,
+                                      hanging_constraints,
+                                      true);
+      sparsity_pattern.copy_from(dsp);
+      mass_matrix.reinit(sparsity_pattern);
+      viscosity_matrix.reinit(sparsity_pattern);
+      stiffness_matrix.reinit(sparsity_pattern);
+      body_force.reinit(dof_handler.n_dofs());
+      step_matrices.clear();
+    }
+
+
+    template <int dim>
+    void
+    Discretisation<dim>::setup_boundary_conditions()
+    {
+      const types::global_dof_index n_dofs = dof_handler.n_dofs();
+      fixed.assign(n_dofs, false);
+      backstop_dofs.clear();
+      for (types::global_dof_index i = 0; i < n_dofs; ++i)
+        if (hanging_constraints.is_constrained(i))
+          fixed[i] = true;
+
+      // One pass over the boundary faces in cell order: a backstop dof is
+      // recorded only if no earlier face fixed it.
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto face = cell->face(f);
+            if (!face->at_boundary())
+              continue;
+            const types::boundary_id id = face->boundary_id();
+            if (id == boundary_id::backstop)
+              for (const unsigned int v : face->vertex_indices())
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    const auto dof = face->vertex_dof_index(v, c);
+                    if (!fixed[dof])
+                      backstop_dofs.emplace_back(dof, c);
+                    fixed[dof] = true;
+                  }
+            else if (id == boundary_id::lateral && dim == 3)
+              for (const unsigned int v : face->vertex_indices())
+                fixed[face->vertex_dof_index(v, dim - 1)] = true;
+            else if (id == boundary_id::contact)
+              for (const unsigned int v : face->vertex_indices())
+                fixed[face->vertex_dof_index(v, 1)] = true;
+          }
+      // backstop dofs that are hanging are set by distribute(), not directly
+      backstop_dofs.erase(
+        std::remove_if(backstop_dofs.begin(),
+                       backstop_dofs.end(),
+                       [&](const auto &d) {
+                         return hanging_constraints.is_constrained(d.first);
+                       }),
+        backstop_dofs.end());
+    }
+
+
+    /**
+     * Mass M (density), viscosity C (Kelvin-Voigt, shear and bulk
+     * viscosity) and stiffness K (bulk modulus, Poisson ratio). A stress of
+     * "the same form" is lambda tr(e) I + 2 mu e with
+     * lambda = bulk - 2/3 shear.
+     */
+    template <int dim>
+    template <class Iterator>
+    void
+    Discretisation<dim>::cell_matrices(
+      const Iterator                    &cell,
+      FEValues<dim>                     &fe_values,
+      std::array<FullMatrix<double>, 3> &matrices,
+      Vector<double>                    &cell_force) const
+    {
+      const auto [bulk_modulus, nu] = scene.elastic_moduli();
+      const double shear_modulus =
+        3. * bulk_modulus * (1. - 2. * nu) / (2. * (1. + nu));
+      const double           lambda  = bulk_modulus - 2. / 3. * shear_modulus;
+      const Tensor<1, dim>   gravity = scene.gravity();
+      const scenes::Material material =
+        scene.material(scene.material_id(cell->center()));
+      const double eta_lambda =
+        material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
+      const FEValuesExtractors::Vector displacement(0);
+
+      fe_values.reinit(cell);
+      for (auto &matrix : matrices)
+        matrix = 0;
+      cell_force                                        = 0;
+      auto &[cell_mass, cell_viscosity, cell_stiffness] = matrices;
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW = fe_values.JxW(q);
+          for (const unsigned int i : fe_values.dof_indices())
+            {
+              const Tensor<1, dim> phi_i = fe_values[displacement].value(i, q);
+              const SymmetricTensor<2, dim> eps_i =
+                fe_values[displacement].symmetric_gradient(i, q);
+              const double div_i = trace(eps_i);
+              for (const unsigned int j : fe_values.dof_indices())
+                {
+                  const SymmetricTensor<2, dim> eps_j =
+                    fe_values[displacement].symmetric_gradient(j, q);
+                  const double div_j   = trace(eps_j);
+                  const double eps_eps = eps_i * eps_j;
+                  cell_mass(i, j) += material.density * phi_i *
+                                     fe_values[displacement].value(j, q) * JxW;
+                  cell_stiffness(i, j) +=
+                    (lambda * div_i * div_j + 2. * shear_modulus * eps_eps) *
+                    JxW;
+                  cell_viscosity(i, j) +=
+                    (eta_lambda * div_i * div_j +
+                     2. * material.shear_viscosity * eps_eps) *
+                    JxW;
+                }
+              cell_force(i) += material.density * gravity * phi_i * JxW;
+            }
+        }
+    }
+
+
+    template <int dim>
+    void
+    Discretisation<dim>::assemble_matrices()
+    {
+      const QGauss<dim> quadrature(fe.degree + 1);
+      FEValues<dim>     fe_values(
+        fe, quadrature, update_values | update_gradients | update_JxW_values);
+      const unsigned int                n = fe.n_dofs_per_cell();
+      std::array<FullMatrix<double>, 3> cell{
+        {FullMatrix<double>(n), FullMatrix<double>(n), FullMatrix<double>(n)}};
+      Vector<double>                       cell_force(n);
+      std::vector<types::global_dof_index> dof_indices(n);
+
+      for (const auto &active_cell : dof_handler.active_cell_iterators())
+        {
+          cell_matrices(active_cell, fe_values, cell, cell_force);
+          active_cell->get_dof_indices(dof_indices);
+          hanging_constraints.distribute_local_to_global(
+            cell[0], cell_force, dof_indices, mass_matrix, body_force);
+          hanging_constraints.distribute_local_to_global(cell[1],
+                                                         dof_indices,
+                                                         viscosity_matrix);
+          hanging_constraints.distribute_local_to_global(cell[2],
+                                                         dof_indices,
+                                                         stiffness_matrix);
+        }
+    }
+
+
+    template <int dim>
+    std::pair<Vector<double>, Vector<double>>
+    Discretisation<dim>::gravity_equilibrium() const
+    {
+      for (const auto &[name, matrix] :
+           {std::make_pair("mass (densities)", &mass_matrix),
+            std::make_pair("viscosity", &viscosity_matrix),
+            std::make_pair("stiffness (bulk modulus, Poisson ratio)",
+                           &stiffness_matrix)})
+        if (!std::isfinite(matrix->frobenius_norm()))
+          throw std::runtime_error(std::string("the ") + name +
+                                   " matrix has non-finite entries: the "
+                                   "material parameters overflow double");
+      if (!std::isfinite(body_force.l2_norm()))
+        throw std::runtime_error("the gravity load is not finite (Gravity, "
+                                 "densities)");
+      SparseMatrix<double> K(sparsity_pattern);
+      K.copy_from(stiffness_matrix);
+      Vector<double> rhs(body_force);
+      for (auto it = K.begin(); it != K.end(); ++it)
+        if (fixed[it->row()] || fixed[it->column()])
+          it->value() = (it->row() == it->column()) ? 1. : 0.;
+      for (types::global_dof_index i = 0; i < rhs.size(); ++i)
+        if (fixed[i])
+          rhs[i] = 0;
+      Vector<double>      u(dof_handler.n_dofs());
+      SparseDirectUMFPACK direct;
+      direct.initialize(K);
+      direct.vmult(u, rhs);
+      hanging_constraints.distribute(u);
+
+      Vector<double> reaction(dof_handler.n_dofs());
+      stiffness_matrix.vmult(reaction, u);
+      reaction -= body_force;
+      return {u, reaction};
+    }
+
+
+    template <int dim>
+    void
+    Discretisation<dim>::set_fixed_values(Vector<double> &v,
+                                          const double    t) const
+    {
+      const Tensor<1, dim> velocity = scene.backstop_velocity(t);
+      for (const auto &[dof, component] : backstop_dofs)
+        v[dof] = velocity[component];
+    }
+
+
+    /** The last four are kept: step doubling alternates tau/2, tau, 2 tau. */
+    template <int dim>
+    const SparseMatrix<double> &
+    Discretisation<dim>::step_matrix(const double tau, const bool dynamic)
+    {
+      for (auto &entry : step_matrices)
+        if (entry.first == tau)
+          return *entry.second;
+      if (step_matrices.size() >= 4)
+        step_matrices.erase(step_matrices.begin());
+      auto A = std::make_unique<SparseMatrix<double>>(sparsity_pattern);
+      A->copy_from(viscosity_matrix);
+      A->add(tau / 2, stiffness_matrix);
+      if (dynamic)
+        A->add(2. / tau, mass_matrix);
+      step_matrices.emplace_back(tau, std::move(A));
+      return *step_matrices.back().second;
+    }
+
+
+    template <int dim>
+    std::vector<unsigned int>
+    Discretisation<dim>::dof_components() const
+    {
+      std::vector<unsigned int>            component(dof_handler.n_dofs());
+      std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          cell->get_dof_indices(indices);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            component[indices[i]] = fe.system_to_component_index(i).first;
+        }
+      return component;
+    }
+
+
+    template class Discretisation<2>;
+    template class Discretisation<3>;
+    template void
+    Discretisation<2>::cell_matrices(
+      const DoFHandler<2>::active_cell_iterator &,
+      FEValues<2> &,
+      std::array<FullMatrix<double>, 3> &,
+      Vector<double> &) const;
+    template void
+    Discretisation<3>::cell_matrices(
+      const DoFHandler<3>::active_cell_iterator &,
+      FEValues<3> &,
+      std::array<FullMatrix<double>, 3> &,
+      Vector<double> &) const;
+    template void
+    Discretisation<2>::cell_matrices(const DoFHandler<2>::level_cell_iterator &,
+                                     FEValues<2> &,
+                                     std::array<FullMatrix<double>, 3> &,
+                                     Vector<double> &) const;
+    template void
+    Discretisation<3>::cell_matrices(const DoFHandler<3>::level_cell_iterator &,
+                                     FEValues<3> &,
+                                     std::array<FullMatrix<double>, 3> &,
+                                     Vector<double> &) const;
+  } // namespace physics
+} // namespace rsfcycle

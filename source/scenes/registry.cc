@@ -1,0 +1,103 @@
+#include <rsfcycle/problem_base.h>
+#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/spring_slider.h>
+#include <rsfcycle/scenes/wedge.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    std::string
+    scene_names()
+    {
+      return "wedge|spring-slider";
+    }
+
+
+    void
+    declare_scene_parameters(ParameterHandler &prm)
+    {
+      Wedge<2>::declare_parameters(prm);
+      SpringSlider::declare_parameters(prm);
+    }
+
+
+    template <int dim>
+    std::unique_ptr<Scene<dim>>
+    make_scene(const std::string &name, ParameterHandler &prm)
+    {
+      if (name == "wedge")
+        return std::make_unique<Wedge<dim>>(prm);
+      throw std::invalid_argument("Scene = " + name + ": allowed are " +
+                                  scene_names());
+    }
+
+
+    namespace
+    {
+      /** A continuum scene solved by ProblemBase<dim>. */
+      template <int dim>
+      class ContinuumSimulation : public Simulation
+      {
+      public:
+        ContinuumSimulation(const Parameters &parameters, ParameterHandler &prm)
+          : parameters(parameters)
+          , scene(make_scene<dim>(parameters.run.scene, prm))
+        {}
+
+        bool
+        run(const ParameterHandler &prm,
+            std::ostream           &log,
+            const bool              resume) override
+        {
+          ProblemBase<dim> problem(parameters, *scene, log);
+          return problem.run(prm, resume);
+        }
+
+      private:
+        const Parameters           &parameters;
+        std::unique_ptr<Scene<dim>> scene;
+      };
+
+
+      /** The spring-slider: no mesh, the same run loop. */
+      class SpringSliderSimulation : public Simulation
+      {
+      public:
+        SpringSliderSimulation(const Parameters &parameters,
+                               ParameterHandler &prm)
+          : slider(parameters, prm)
+        {}
+
+        bool
+        run(const ParameterHandler &prm,
+            std::ostream           &log,
+            const bool              resume) override
+        {
+          return !slider.run(prm, log, resume).interrupted;
+        }
+
+      private:
+        SpringSlider slider;
+      };
+    } // namespace
+
+
+    std::unique_ptr<Simulation>
+    make_simulation(const Parameters &parameters, ParameterHandler &prm)
+    {
+      if (parameters.run.scene == "spring-slider")
+        return std::make_unique<SpringSliderSimulation>(parameters, prm);
+      if (parameters.run.dimension == 2)
+        return std::make_unique<ContinuumSimulation<2>>(parameters, prm);
+      return std::make_unique<ContinuumSimulation<3>>(parameters, prm);
+    }
+
+
+    template std::unique_ptr<Scene<2>>
+    make_scene<2>(const std::string &, ParameterHandler &);
+    template std::unique_ptr<Scene<3>>
+    make_scene<3>(const std::string &, ParameterHandler &);
+  } // namespace scenes
+} // namespace rsfcycle

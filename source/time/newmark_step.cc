@@ -1,0 +1,309 @@
+#include <cmath>
+#include <rsfcycle/time/newmark_step.h>
+#include <rsfcycle/time/rate_state_coupling.h>
+#include <sstream>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    template <int dim>
+    NewmarkStep<dim>::NewmarkStep(
+      const SolverParameters                           &solver,
+      physics::Discretisation<dim>                     &discretisation,
+      const friction::ContactQuadrature<dim>           &contact,
+      solvers::TNNMG                                   &tnnmg,
+      const double                                      cohesion,
+      std::function<double(const dealii::Point<dim> &)> along_base)
+      : solver(solver)
+      , discretisation(discretisation)
+      , contact(contact)
+      , tnnmg(tnnmg)
+      , cohesion(cohesion)
+      , state_law(friction::state_law_from_name(solver.state_law))
+      , along_base(std::move(along_base))
+    {}
+
+
+    template <int dim>
+    Vector<double>
+    NewmarkStep<dim>::right_hand_side(const BodyState &old,
+                                      const double     tau) const
+    {
+      Vector<double> rhs(discretisation.body_force), tmp(old.u);
+      tmp.add(tau / 2, old.v);
+      Vector<double> Ku(rhs.size());
+      discretisation.stiffness_matrix.vmult(Ku, tmp);
+      rhs -= Ku;
+      if (solver.dynamics == "dynamic")
+        {
+          tmp = old.a;
+          tmp.add(2. / tau, old.v);
+          Vector<double> Mv(rhs.size());
+          discretisation.mass_matrix.vmult(Mv, tmp);
+          rhs += Mv;
+        }
+      return rhs;
+    }
+
+
+    template <int dim>
+    std::optional<BodyState>
+    NewmarkStep<dim>::operator()(const BodyState &old,
+                                 const double     t,
+                                 const double     tau)
+    {
+      const SparseMatrix<double> &A =
+        discretisation.step_matrix(tau, solver.dynamics == "dynamic");
+      const Vector<double> rhs = right_hand_side(old, tau);
+
+      BodyState next;
+      next.v = old.v;
+      discretisation.set_fixed_values(next.v, t + tau);
+      discretisation.hanging_constraints.distribute(next.v);
+
+      std::vector<friction::NodePotential> potentials =
+        contact.potentials(cohesion);
+      solvers::SpatialProblem problem;
+      problem.A          = &A;
+      problem.rhs        = &rhs;
+      problem.fixed      = &discretisation.fixed;
+      problem.contact    = &contact.contact_set();
+      problem.potentials = &potentials;
+      problem.matrix_key = tau;
+
+      if (!couple(old, problem, potentials, t, tau, next))
+        return {};
+      if (!complete(old, A, rhs, t, tau, next))
+        return {};
+      return next;
+    }
+
+
+    template <int dim>
+    bool
+    NewmarkStep<dim>::couple(const BodyState                      &old,
+                             const solvers::SpatialProblem        &problem,
+                             std::vector<friction::NodePotential> &potentials,
+                             const double                          t,
+                             const double                          tau,
+                             BodyState                            &next)
+    {
+      const unsigned int n_nodes      = contact.n_nodes();
+      const auto         update_state = [&](const Vector<double> &v_new,
+                                    const double          weight_new,
+                                    std::vector<double>  &alpha) {
+        update_states(old, v_new, weight_new, tau, alpha);
+      };
+
+      const bool explicit_coupling = solver.coupling == "explicit";
+      // Inexact fixed point (`Inner tolerance factor`); a cap of one
+      // fixed-point iteration needs that one solve at TNNMG tolerance.
+      const bool inexact =
+        !explicit_coupling &&
+        solver.inner_tolerance_factor > solver.tnnmg_tolerance &&
+        solver.max_fixed_point_iterations > 1;
+      std::vector<double> alpha = old.alpha;
+      unsigned int        k     = 0;
+      double              d     = 0;
+      std::string         why;
+      const auto solve_velocity = [&](const std::vector<double> &alpha_k,
+                                      Vector<double>            &v) {
+        ++k;
+        for (unsigned int i = 0; i < n_nodes; ++i)
+          potentials[i].alpha = alpha_k[i];
+        // Inexact fixed point: the early iterations, whose state is still
+        // far from converged, get a looser TNNMG tolerance (d is the state
+        // distance of the previous iteration; d_0 = 1).
+        const double inner_tolerance =
+          inexact ?
+            std::max(solver.tnnmg_tolerance,
+                     solver.inner_tolerance_factor * (k == 1 ? 1. : d)) :
+            solver.tnnmg_tolerance;
+        const solvers::TNNMGStatistics stats =
+          tnnmg.solve(problem, v, inner_tolerance);
+        next.statistics.fixed_point_iterations = k;
+        next.statistics.tnnmg_iterations += stats.iterations;
+        next.statistics.linear_iterations += stats.linear_iterations;
+        work.tnnmg_iterations += stats.iterations;
+        work.linear_iterations += stats.linear_iterations;
+        if (!stats.converged)
+          why = tnnmg_failure(stats, t, tau, k, v);
+        return stats.converged;
+      };
+      const auto coupled = couple_rate_and_state(
+        explicit_coupling ? Coupling::explicit_decoupling :
+                            Coupling::fixed_point,
+        solver.fixed_point_tolerance,
+        solver.max_fixed_point_iterations,
+        old.v,
+        next.v,
+        alpha,
+        solve_velocity,
+        update_state,
+        [this](const std::vector<double> &a1, const std::vector<double> &a2) {
+          return contact.state_distance(a1, a2);
+        },
+        &d,
+        // a first solve at the loose tolerance factor * 1 is never accepted
+        inexact ? 2 : 1);
+      if (!coupled)
+        {
+          if (why.empty())
+            {
+              std::ostringstream message;
+              message << "t = " << t + tau << " s, step " << tau << " s: ";
+              if (!std::isfinite(d))
+                message << "non-finite state distance; "
+                        << first_non_finite(next.v);
+              else
+                message << "the fixed-point iteration did not converge in " << k
+                        << " iterations (state distance " << d
+                        << " > Fixed-point tolerance)";
+              why = message.str();
+            }
+          failure = why;
+          return false;
+        }
+      next.alpha = alpha;
+      return true;
+    }
+
+
+    template <int dim>
+    void
+    NewmarkStep<dim>::update_states(const BodyState      &old,
+                                    const Vector<double> &v_new,
+                                    const double          weight_new,
+                                    const double          tau,
+                                    std::vector<double>  &alpha) const
+    {
+      const auto &nodes = contact.contact_set().nodes;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          double vm[2] = {0, 0};
+          for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
+            {
+              const auto dof = nodes[k].dofs[l];
+              vm[l] = (1 - weight_new) * old.v[dof] + weight_new * v_new[dof];
+            }
+          alpha[k] = friction::update_state(state_law,
+                                            contact.nodes()[k].params,
+                                            old.alpha[k],
+                                            std::hypot(vm[0], vm[1]),
+                                            tau);
+        }
+    }
+
+
+    template <int dim>
+    std::string
+    NewmarkStep<dim>::tnnmg_failure(const solvers::TNNMGStatistics &stats,
+                                    const double                    t,
+                                    const double                    tau,
+                                    const unsigned int              k,
+                                    const Vector<double>           &v) const
+    {
+      std::ostringstream message;
+      message << "t = " << t + tau << " s, step " << tau << " s: TNNMG "
+              << (std::isfinite(stats.relative_change) ?
+                    "did not converge (relative change " :
+                    "produced non-finite values (relative change ")
+              << stats.relative_change << " after " << stats.iterations
+              << " iterations) in fixed-point iteration " << k << "; "
+              << first_non_finite(v);
+      return message.str();
+    }
+
+
+    template <int dim>
+    bool
+    NewmarkStep<dim>::complete(const BodyState            &old,
+                               const SparseMatrix<double> &A,
+                               const Vector<double>       &rhs,
+                               const double                t,
+                               const double                tau,
+                               BodyState                  &next)
+    {
+      discretisation.hanging_constraints.distribute(next.v);
+      next.u = old.u;
+      next.u.add(tau / 2, old.v, tau / 2, next.v);
+      if (solver.dynamics == "dynamic")
+        {
+          next.a = next.v;
+          next.a -= old.v;
+          next.a *= 2. / tau;
+          next.a -= old.a;
+        }
+      else
+        next.a.reinit(old.a.size());
+
+      // Friction force per node from the equilibrium, r - A v (tangential).
+      const auto        &nodes   = contact.contact_set().nodes;
+      const unsigned int n_nodes = nodes.size();
+      Vector<double>     residual(rhs.size());
+      A.residual(residual, next.v, rhs);
+      next.shear_traction.resize(n_nodes);
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        {
+          double f2 = 0;
+          for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
+            f2 += residual[nodes[k].dofs[l]] * residual[nodes[k].dofs[l]];
+          next.shear_traction[k] = std::sqrt(f2) / contact.nodes()[k].weight;
+        }
+
+      if (!std::isfinite(next.u.l2_norm()) ||
+          !std::isfinite(next.v.l2_norm()) || !std::isfinite(next.a.l2_norm()))
+        {
+          failure = "t = " + std::to_string(t + tau) +
+                    " s: non-finite displacement, velocity or "
+                    "acceleration; " +
+                    first_non_finite(next.v);
+          return false;
+        }
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        if (!std::isfinite(next.alpha[k]))
+          {
+            failure = "t = " + std::to_string(t + tau) +
+                      " s: non-finite friction state at the base node at s = " +
+                      std::to_string(along_base(contact.nodes()[k].position)) +
+                      " m";
+            return false;
+          }
+      return true;
+    }
+
+
+    template <int dim>
+    StepStatistics
+    NewmarkStep<dim>::take_work()
+    {
+      const StepStatistics result = work;
+      work                        = StepStatistics();
+      return result;
+    }
+
+
+    template <int dim>
+    std::string
+    NewmarkStep<dim>::first_non_finite(const Vector<double> &v) const
+    {
+      const auto &nodes = contact.contact_set().nodes;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
+          if (!std::isfinite(v[nodes[k].dofs[l]]))
+            return "non-finite slip rate at the base node at s = " +
+                   std::to_string(along_base(contact.nodes()[k].position)) +
+                   " m";
+      for (types::global_dof_index i = 0; i < v.size(); ++i)
+        if (!std::isfinite(v[i]))
+          return "non-finite velocity in the interior (dof " +
+                 std::to_string(i) + ")";
+      return "all velocities finite";
+    }
+
+
+    template class NewmarkStep<2>;
+    template class NewmarkStep<3>;
+  } // namespace time
+} // namespace rsfcycle

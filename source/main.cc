@@ -5,10 +5,12 @@
 #include <cctype>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/registry.h>
 #include <streambuf>
@@ -149,8 +151,11 @@ namespace
 int
 main(int argc, char **argv)
 {
-  // Trilinos (the amg correction) needs MPI; one process, one thread.
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // Trilinos (the amg correction) needs MPI; one process, one thread. It is
+  // started only for a run of a continuum scene: its start-up is most of
+  // the program start (benchmarks/time-stepping/README.md), which --help,
+  // --print-parameters, bad input and the spring-slider need not pay.
+  std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
   try
     {
       dealii::ParameterHandler prm;
@@ -201,6 +206,10 @@ main(int argc, char **argv)
       const bool resume = !resume_dir.empty();
       if (resume)
         parameters.run.output_directory = resume_dir;
+      if (parameters.run.scene == "spring-slider")
+        dealii::MultithreadInfo::set_thread_limit(1); // no mesh, no MPI
+      else
+        mpi.emplace(argc, argv, 1);
       if (!run(parameters, prm, resume))
         return 130;
     }

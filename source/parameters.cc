@@ -95,12 +95,32 @@ namespace rsfcycle
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),
-                      "Step doubling (true) or a fixed step (false)");
+                      "Adaptive steps chosen by the Controller (true) or a "
+                      "fixed step, the Initial step (false)");
+    prm.declare_entry("Controller",
+                      "step-doubling",
+                      Selection("step-doubling|local-extrapolation"),
+                      "How adaptive steps are chosen. step-doubling: the "
+                      "paper's controller (MODEL.md 4.3: two steps of tau "
+                      "against one of 2 tau, one of tau against two of "
+                      "tau/2, the step of tau accepted; 3 to 4 spatial "
+                      "problems per step); local-extrapolation: one step of "
+                      "tau against two of tau/2, the two half steps "
+                      "accepted, tau doubled when the estimate allows (3 "
+                      "spatial problems per two steps; doc/design.md)");
+    prm.declare_entry("Extrapolated start",
+                      "true",
+                      Bool(),
+                      "With Controller = local-extrapolation: start the "
+                      "fixed-point iteration of every spatial problem from "
+                      "the state and velocity extrapolated from the last "
+                      "accepted steps (true) or from the old ones (false)");
     prm.declare_entry("Tolerance",
                       "1e-5",
                       Double(1e-300, 1),
-                      "Step-doubling tolerance delta on the state distance "
-                      "(14) [-]");
+                      "Tolerance delta on the state distance (14) of the "
+                      "adaptive controller (for step doubling: between one "
+                      "step of tau and two of tau/2) [-]");
     prm.declare_entry("Initial step",
                       "1e-2",
                       Double(1e-300),
@@ -121,11 +141,13 @@ namespace rsfcycle
   TimeSteppingParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    adaptive     = prm.get_bool("Adaptive");
-    tolerance    = prm.get_double("Tolerance");
-    initial_step = prm.get_double("Initial step");
-    minimum_step = prm.get_double("Minimum step");
-    maximum_step = prm.get_double("Maximum step");
+    adaptive           = prm.get_bool("Adaptive");
+    controller         = prm.get("Controller");
+    extrapolated_start = prm.get_bool("Extrapolated start");
+    tolerance          = prm.get_double("Tolerance");
+    initial_step       = prm.get_double("Initial step");
+    minimum_step       = prm.get_double("Minimum step");
+    maximum_step       = prm.get_double("Maximum step");
     prm.leave_subsection();
   }
 

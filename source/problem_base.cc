@@ -8,6 +8,7 @@
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/solvers/amg_correction.h>
 #include <rsfcycle/solvers/multigrid_correction.h>
+#include <rsfcycle/time/make_controller.h>
 #include <rsfcycle/time/run_loop.templates.h>
 
 namespace rsfcycle
@@ -160,6 +161,7 @@ namespace rsfcycle
     tnnmg_control.max_iterations   = solver.max_tnnmg_iterations;
     tnnmg_control.truncation_ratio = solver.truncation_ratio;
     tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction, tnnmg_control);
+    tnnmg->set_timer(&timer);
   }
 
 
@@ -252,6 +254,7 @@ namespace rsfcycle
       *tnnmg,
       scene.cohesion(),
       [this](const Point<dim> &p) { return scene.along_base_coordinate(p); });
+    newmark->set_timer(&timer);
     snapshots = std::make_unique<output::SnapshotWriter<dim>>(
       parameters.run.output_directory,
       discretisation,
@@ -292,9 +295,10 @@ namespace rsfcycle
   std::optional<BodyState>
   ProblemBase<dim>::newmark_step(const BodyState &old,
                                  const double     t,
-                                 const double     tau)
+                                 const double     tau,
+                                 const BodyState *guess)
   {
-    return (*newmark)(old, t, tau);
+    return (*newmark)(old, t, tau, guess);
   }
 
 
@@ -443,19 +447,28 @@ namespace rsfcycle
     setup();
     print_setup();
 
-    const auto &ts = parameters.time_stepping;
-    controller     = std::make_unique<time::StepDoubling<BodyState>>(
-      [this](const BodyState &s, const double t0, const double dt) {
-        return newmark_step(s, t0, dt);
-      },
+    controller = time::make_controller<BodyState>(
+      parameters.time_stepping,
+      [this](const BodyState &s,
+             const double     t0,
+             const double     dt,
+             const BodyState *guess) { return newmark_step(s, t0, dt, guess); },
       [this](const BodyState &s1, const BodyState &s2) {
         return state_distance(s1.alpha, s2.alpha);
       },
-      ts.tolerance,
-      ts.initial_step,
-      ts.minimum_step,
-      ts.maximum_step,
-      ts.adaptive);
+      [](const std::array<const BodyState *, 3> &s,
+         const std::array<double, 3>            &w) {
+        // a prediction: the velocity and the state (what a guess gives)
+        BodyState p;
+        p.v.reinit(s[2]->v.size());
+        for (unsigned int i = 0; i < 3; ++i)
+          p.v.add(w[i], s[i]->v);
+        p.alpha.assign(s[2]->alpha.size(), 0.);
+        for (unsigned int k = 0; k < p.alpha.size(); ++k)
+          p.alpha[k] = w[0] * s[0]->alpha[k] + w[1] * s[1]->alpha[k] +
+                       w[2] * s[2]->alpha[k];
+        return p;
+      });
     time_loop = std::make_unique<time::RunLoop<BodyState>>(
       parameters, *this, *controller, log, timer);
     return !time_loop->run(resume).interrupted;

@@ -37,14 +37,16 @@ namespace rsfcycle
     parse_parameters(ParameterHandler &prm);
   };
 
-  /** Subsection "Time stepping": step doubling (MODEL.md §4.3). */
+  /** Subsection "Time stepping": step-size control (MODEL.md §4.3). */
   struct TimeSteppingParameters
   {
-    bool   adaptive     = true;
-    double tolerance    = 1e-5;
-    double initial_step = 1e-2;
-    double minimum_step = 1e-9;
-    double maximum_step = 100;
+    bool        adaptive           = true;
+    std::string controller         = "step-doubling";
+    bool        extrapolated_start = true;
+    double      tolerance          = 1e-5;
+    double      initial_step       = 1e-2;
+    double      minimum_step       = 1e-9;
+    double      maximum_step       = 100;
 
     static void
     declare_parameters(ParameterHandler &prm);

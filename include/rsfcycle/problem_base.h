@@ -12,10 +12,10 @@
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/scenes/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
+#include <rsfcycle/time/controller.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/newmark_step.h>
 #include <rsfcycle/time/run_loop.h>
-#include <rsfcycle/time/step_doubling.h>
 #include <vector>
 
 namespace rsfcycle
@@ -36,7 +36,7 @@ namespace rsfcycle
    *  - the Newmark step with the rate/state coupling (time/newmark_step.h);
    *  - the writers of VTU snapshots (output/snapshots.h);
    *  - the ParameterHandler-driven time loop (time/run_loop.h) with its
-   *    step-size controller (time/step_doubling.h), through run().
+   *    step-size controller (time/make_controller.h), through run().
    * To the time loop it is a time::Model of BodyState.
    */
   template <int dim>
@@ -63,11 +63,15 @@ namespace rsfcycle
     run(const ParameterHandler &prm, bool resume = false);
 
     /**
-     * One Newmark step of length tau from state `old` at time t; no value
-     * if the spatial problem failed (no convergence, non-finite values).
+     * One Newmark step of length tau from state `old` at time t, its
+     * iterations started from `guess` if given; no value if the spatial
+     * problem failed (no convergence, non-finite values).
      */
     std::optional<BodyState>
-    newmark_step(const BodyState &old, double t, double tau);
+    newmark_step(const BodyState &old,
+                 double           t,
+                 double           tau,
+                 const BodyState *guess = nullptr);
 
     /** The state distance (14) between two states. */
     double
@@ -156,14 +160,14 @@ namespace rsfcycle
     std::ostream             &log;
     TimerOutput               timer;
 
-    physics::Discretisation<dim>                   discretisation;
-    friction::ContactQuadrature<dim>               contact;
-    std::unique_ptr<solvers::LinearCorrection>     linear_correction;
-    std::unique_ptr<solvers::TNNMG>                tnnmg;
-    std::unique_ptr<time::NewmarkStep<dim>>        newmark;
-    std::unique_ptr<output::SnapshotWriter<dim>>   snapshots;
-    std::unique_ptr<time::StepDoubling<BodyState>> controller;
-    std::unique_ptr<time::RunLoop<BodyState>>      time_loop;
+    physics::Discretisation<dim>                 discretisation;
+    friction::ContactQuadrature<dim>             contact;
+    std::unique_ptr<solvers::LinearCorrection>   linear_correction;
+    std::unique_ptr<solvers::TNNMG>              tnnmg;
+    std::unique_ptr<time::NewmarkStep<dim>>      newmark;
+    std::unique_ptr<output::SnapshotWriter<dim>> snapshots;
+    std::unique_ptr<time::Controller<BodyState>> controller;
+    std::unique_ptr<time::RunLoop<BodyState>>    time_loop;
 
     BodyState initial;
 

@@ -4,8 +4,8 @@
 #include <fstream>
 #include <iomanip>
 #include <rsfcycle/scenes/spring_slider.h>
+#include <rsfcycle/time/make_controller.h>
 #include <rsfcycle/time/run_loop.templates.h>
-#include <rsfcycle/time/step_doubling.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -202,7 +202,8 @@ namespace rsfcycle
     std::optional<SpringSlider::State>
     SpringSlider::newmark_step(const State &old,
                                const double t,
-                               const double tau) const
+                               const double tau,
+                               const State *guess) const
     {
       // (15) for one degree of freedom; the spring force at t + tau is
       // tau0 + k (u_lp - delta_n), delta_n = delta + tau/2 (V_old + V_n).
@@ -218,8 +219,8 @@ namespace rsfcycle
       phi.cohesion_force = cohesion;
 
       State      next       = old;
-      double     v          = old.velocity;
-      double     alpha      = old.alpha;
+      double     v          = guess ? guess->velocity : old.velocity;
+      double     alpha      = guess ? guess->alpha : old.alpha;
       const auto iterations = time::couple_rate_and_state(
         coupling,
         parameters.solver.fixed_point_tolerance,
@@ -307,23 +308,31 @@ namespace rsfcycle
         log << "Solver: " << parameters.solver.coupling << " coupling, "
             << parameters.solver.state_law << " law" << std::endl;
 
-      const auto                              &ts = parameters.time_stepping;
       std::unique_ptr<time::Controller<State>> controller;
       if (integrator == "arkode")
         controller = make_arkode_reference(*this, log);
       else
-        controller = std::make_unique<time::StepDoubling<State>>(
-          [this](const State &s, const double t0, const double dt) {
-            return newmark_step(s, t0, dt);
-          },
+        controller = time::make_controller<State>(
+          parameters.time_stepping,
+          [this](const State &s,
+                 const double t0,
+                 const double dt,
+                 const State *guess) { return newmark_step(s, t0, dt, guess); },
           [](const State &s1, const State &s2) {
             return std::abs(s1.alpha - s2.alpha);
           },
-          ts.tolerance,
-          ts.initial_step,
-          ts.minimum_step,
-          ts.maximum_step,
-          ts.adaptive);
+          [](const std::array<const State *, 3> &s,
+             const std::array<double, 3>        &w) {
+            State p;
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                p.slip += w[i] * s[i]->slip;
+                p.velocity += w[i] * s[i]->velocity;
+                p.acceleration += w[i] * s[i]->acceleration;
+                p.alpha += w[i] * s[i]->alpha;
+              }
+            return p;
+          });
 
       dealii::TimerOutput  timer(log,
                                 dealii::TimerOutput::never,

@@ -76,8 +76,14 @@ namespace rsfcycle
         return internal_steps;
       }
 
+      time::ControllerMemory<State>
+      memory() const override
+      {
+        return {};
+      }
+
       void
-      restore(double, std::optional<State>) override
+      restore(const time::ControllerMemory<State> &) override
       {}
 
       bool

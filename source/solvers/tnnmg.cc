@@ -186,15 +186,77 @@ namespace rsfcycle
     }
 
 
+    void
+    TNNMG::truncate_and_linearise(const SpatialProblem &problem,
+                                  const Vector<double> &v)
+    {
+      const SparseMatrix<double> &A       = *problem.A;
+      const std::vector<bool>    &fixed   = *problem.fixed;
+      const ContactSet           &contact = *problem.contact;
+      const auto                 &phis    = *problem.potentials;
+      const global_dof_index      n       = v.size();
+      A.residual(residual, v, *problem.rhs); // r - A v
+      for (global_dof_index i = 0; i < n; ++i)
+        truncated[i] = fixed[i];
+      newton_rhs = residual;
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          const ContactNode    &node = contact.nodes[k];
+          std::array<double, 2> y{}, grad{};
+          for (unsigned int l = 0; l < node.n_dofs; ++l)
+            y[l] = v[node.dofs[l]];
+          friction_gradient_and_hessian(
+            phis[k], y, node.n_dofs, grad, hessians[k]);
+          double max_hessian = 0, max_diagonal = 0;
+          for (unsigned int l = 0; l < node.n_dofs; ++l)
+            {
+              max_hessian =
+                std::max(max_hessian, hessians[k][node.n_dofs * l + l]);
+              max_diagonal =
+                std::max(max_diagonal, A.diag_element(node.dofs[l]));
+            }
+          const bool stuck =
+            (y[0] == 0 && y[1] == 0) ||
+            !(max_hessian <= control.truncation_ratio * max_diagonal);
+          for (unsigned int l = 0; l < node.n_dofs; ++l)
+            {
+              truncated[node.dofs[l]] = stuck;
+              newton_rhs[node.dofs[l]] -= grad[l];
+            }
+          if (stuck)
+            hessians[k] = {{0., 0., 0., 0.}};
+        }
+      for (global_dof_index i = 0; i < n; ++i)
+        if (truncated[i])
+          newton_rhs[i] = 0;
+    }
+
+
+    void
+    TNNMG::set_timer(dealii::TimerOutput *new_timer)
+    {
+      timer = new_timer;
+    }
+
+
+    std::optional<dealii::TimerOutput::Scope>
+    TNNMG::section(const char *name) const
+    {
+      if (timer == nullptr)
+        return std::nullopt;
+      return std::optional<dealii::TimerOutput::Scope>(std::in_place,
+                                                       *timer,
+                                                       name);
+    }
+
+
     TNNMGStatistics
     TNNMG::solve(const SpatialProblem &problem,
                  Vector<double>       &v,
                  const double          tolerance)
     {
       const SparseMatrix<double> &A       = *problem.A;
-      const std::vector<bool>    &fixed   = *problem.fixed;
       const ContactSet           &contact = *problem.contact;
-      const auto                 &phis    = *problem.potentials;
       const global_dof_index      n       = v.size();
 
       residual.reinit(n);
@@ -213,45 +275,19 @@ namespace rsfcycle
           v_old = v;
 
           // 1. Nonlinear block Gauss-Seidel.
-          gauss_seidel_sweep(problem, v);
+          {
+            const auto scope = section("TNNMG: nonlinear smoother");
+            gauss_seidel_sweep(problem, v);
+          }
 
           // 2. Truncation and the Newton system at the smoothed iterate.
-          A.residual(residual, v, *problem.rhs); // r - A v
-          for (global_dof_index i = 0; i < n; ++i)
-            truncated[i] = fixed[i];
-          newton_rhs = residual;
-          for (unsigned int k = 0; k < contact.nodes.size(); ++k)
-            {
-              const ContactNode    &node = contact.nodes[k];
-              std::array<double, 2> y{}, grad{};
-              for (unsigned int l = 0; l < node.n_dofs; ++l)
-                y[l] = v[node.dofs[l]];
-              friction_gradient_and_hessian(
-                phis[k], y, node.n_dofs, grad, hessians[k]);
-              double max_hessian = 0, max_diagonal = 0;
-              for (unsigned int l = 0; l < node.n_dofs; ++l)
-                {
-                  max_hessian =
-                    std::max(max_hessian, hessians[k][node.n_dofs * l + l]);
-                  max_diagonal =
-                    std::max(max_diagonal, A.diag_element(node.dofs[l]));
-                }
-              const bool stuck =
-                (y[0] == 0 && y[1] == 0) ||
-                !(max_hessian <= control.truncation_ratio * max_diagonal);
-              for (unsigned int l = 0; l < node.n_dofs; ++l)
-                {
-                  truncated[node.dofs[l]] = stuck;
-                  newton_rhs[node.dofs[l]] -= grad[l];
-                }
-              if (stuck)
-                hessians[k] = {{0., 0., 0., 0.}};
-            }
-          for (global_dof_index i = 0; i < n; ++i)
-            if (truncated[i])
-              newton_rhs[i] = 0;
+          {
+            const auto scope = section("TNNMG: truncation");
+            truncate_and_linearise(problem, v);
+          }
 
           // 3. Linear correction.
+          auto                  scope = section("TNNMG: linear correction");
           TruncatedNewtonSystem system;
           system.A             = &A;
           system.contact       = &contact;
@@ -266,6 +302,9 @@ namespace rsfcycle
               correction_vector[i] = 0;
 
           // 4. Line search.
+          scope.reset();
+          if (timer != nullptr)
+            scope.emplace(*timer, "TNNMG: line search");
           if (std::isfinite(correction_vector.l2_norm()))
             {
               const double step = line_search(problem, v, correction_vector);

@@ -51,14 +51,15 @@ namespace rsfcycle
     std::optional<BodyState>
     NewmarkStep<dim>::operator()(const BodyState &old,
                                  const double     t,
-                                 const double     tau)
+                                 const double     tau,
+                                 const BodyState *guess)
     {
       const SparseMatrix<double> &A =
         discretisation.step_matrix(tau, solver.dynamics == "dynamic");
       const Vector<double> rhs = right_hand_side(old, tau);
 
       BodyState next;
-      next.v = old.v;
+      next.v = guess ? guess->v : old.v;
       discretisation.set_fixed_values(next.v, t + tau);
       discretisation.hanging_constraints.distribute(next.v);
 
@@ -72,7 +73,13 @@ namespace rsfcycle
       problem.potentials = &potentials;
       problem.matrix_key = tau;
 
-      if (!couple(old, problem, potentials, t, tau, next))
+      if (!couple(old,
+                  guess ? guess->alpha : old.alpha,
+                  problem,
+                  potentials,
+                  t,
+                  tau,
+                  next))
         return {};
       if (!complete(old, A, rhs, t, tau, next))
         return {};
@@ -83,6 +90,7 @@ namespace rsfcycle
     template <int dim>
     bool
     NewmarkStep<dim>::couple(const BodyState                      &old,
+                             const std::vector<double>            &alpha_start,
                              const solvers::SpatialProblem        &problem,
                              std::vector<friction::NodePotential> &potentials,
                              const double                          t,
@@ -93,6 +101,9 @@ namespace rsfcycle
       const auto         update_state = [&](const Vector<double> &v_new,
                                     const double          weight_new,
                                     std::vector<double>  &alpha) {
+        std::optional<dealii::TimerOutput::Scope> scope;
+        if (timer != nullptr)
+          scope.emplace(*timer, "State update");
         update_states(old, v_new, weight_new, tau, alpha);
       };
 
@@ -103,7 +114,7 @@ namespace rsfcycle
         !explicit_coupling &&
         solver.inner_tolerance_factor > solver.tnnmg_tolerance &&
         solver.max_fixed_point_iterations > 1;
-      std::vector<double> alpha = old.alpha;
+      std::vector<double> alpha = alpha_start;
       unsigned int        k     = 0;
       double              d     = 0;
       std::string         why;

@@ -7,7 +7,8 @@
 # with its cached candidate step): the computation is deterministic and the
 # checkpoint holds everything the time loop carries. Also checks that
 # SIGINT stops a run with exit code 130 and a resumable folder. The same
-# for the spring-slider, which runs through the same run loop (issue 12).
+# for the spring-slider, which runs through the same run loop (issue 12),
+# with step doubling and with local extrapolation (issue 13).
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -41,6 +42,12 @@ subsection Output
   set Checkpoint steps = 2000
 end
 PRM
+}
+# the same with the local-extrapolation controller, whose checkpoint holds
+# its history and a pending half step
+make_slider_le_prm() {
+  make_slider_prm "$1"
+  printf 'subsection Time stepping\n  set Controller = local-extrapolation\nend\n' >> "$1.prm"
 }
 fail() { echo "FAILED: $*"; exit 1; }
 # start run $1 in the background (pid in $pid) and wait until it has
@@ -82,3 +89,4 @@ check_resume() { # label, prm maker
 }
 check_resume wedge make_wedge_prm
 check_resume slider make_slider_prm
+check_resume slider-local-extrapolation make_slider_le_prm

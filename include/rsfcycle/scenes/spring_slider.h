@@ -60,10 +60,10 @@ namespace rsfcycle
      * is solved exactly by friction::solve_local_problem<1>; the
      * rate/state fixed point (18) or explicit decoupling
      * (time::couple_rate_and_state); the closed-form state update (17);
-     * and step doubling (time::StepDoubling) with the distance (14), which
-     * for one node is |alpha1 - alpha2|. It advances through the same run
-     * loop (time::RunLoop) and writes the same files as the wedge, with
-     * one contact node at position 0; it allocates no mesh, no multigrid
+     * and the controller of `Time stepping/Controller` with the distance
+     * (14), which for one node is |alpha1 - alpha2|. It advances through the
+     * same run loop (time::RunLoop) and writes the same files as the wedge,
+     * with one contact node at position 0; it allocates no mesh, no multigrid
      * and no VTU writer. Event times are interpolated in log V between the
      * steps (output::EventDetector).
      *
@@ -123,10 +123,14 @@ namespace rsfcycle
 
       /**
        * One Newmark step (15) of length tau from the state at time t, with
-       * the rate/state coupling; nothing if the coupling failed.
+       * the rate/state coupling started from `guess` if given; nothing if
+       * the coupling failed.
        */
       std::optional<State>
-      newmark_step(const State &old, double t, double tau) const;
+      newmark_step(const State &old,
+                   double       t,
+                   double       tau,
+                   const State *guess = nullptr) const;
 
       /** Load-point displacement u_lp(t) [m] and velocity v_lp(t) [m/s]. */
       double

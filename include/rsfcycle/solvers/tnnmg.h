@@ -1,7 +1,9 @@
 #ifndef rsfcycle_solvers_tnnmg_h
 #define rsfcycle_solvers_tnnmg_h
 
+#include <deal.II/base/timer.h>
 #include <memory>
+#include <optional>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <string>
 
@@ -64,14 +66,36 @@ namespace rsfcycle
       gauss_seidel_sweep(const SpatialProblem   &problem,
                          dealii::Vector<double> &v);
 
+      /**
+       * Time the four steps of every iteration in these TimerOutput
+       * sections ("TNNMG: nonlinear smoother", "TNNMG: truncation",
+       * "TNNMG: linear correction", "TNNMG: line search"); nullptr: none.
+       */
+      void
+      set_timer(dealii::TimerOutput *timer);
+
     private:
+      /**
+       * Step 2: the residual, truncation of stuck nodes, the friction
+       * Hessians and the right-hand side of the truncated Newton system at
+       * the smoothed iterate v.
+       */
+      void
+      truncate_and_linearise(const SpatialProblem         &problem,
+                             const dealii::Vector<double> &v);
+
+      /** A timer section if a timer is attached. */
+      std::optional<dealii::TimerOutput::Scope>
+      section(const char *name) const;
+
       double
       line_search(const SpatialProblem         &problem,
                   const dealii::Vector<double> &v,
                   const dealii::Vector<double> &c) const;
 
-      LinearCorrection &correction;
-      TNNMGControl      control;
+      LinearCorrection    &correction;
+      TNNMGControl         control;
+      dealii::TimerOutput *timer = nullptr;
 
       dealii::Vector<double> residual, increment, newton_rhs, correction_vector,
         Ac, v_old;

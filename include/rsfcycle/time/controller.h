@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rsfcycle
 {
@@ -14,6 +15,28 @@ namespace rsfcycle
     {
     public:
       using std::runtime_error::runtime_error;
+    };
+
+    /**
+     * What a controller carries from one advance() to the next, in a form a
+     * checkpoint can hold: the step size, states it keeps (a step already
+     * computed, or the history of accepted states) and numbers (their
+     * times).
+     */
+    template <typename State>
+    struct ControllerMemory
+    {
+      std::string         controller; // the name of the controller
+      double              step_size = 0;
+      std::vector<State>  states;
+      std::vector<double> values;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &controller &step_size &states &values;
+      }
     };
 
     /**
@@ -49,19 +72,19 @@ namespace rsfcycle
       n_spatial_problems() const = 0;
 
       /**
-       * A step already computed for the next advance(), if any: a
-       * checkpoint stores it so that a resumed run repeats the
-       * uninterrupted one exactly.
+       * Everything the next advance() depends on: a checkpoint stores it so
+       * that a resumed run repeats the uninterrupted one exactly.
        */
-      virtual std::optional<State>
-      candidate() const
-      {
-        return {};
-      }
+      virtual ControllerMemory<State>
+      memory() const = 0;
 
-      /** Restore the guess and the candidate from a checkpoint. */
+      /**
+       * Restore the memory from a checkpoint; of another controller's
+       * memory (a run resumed with another `Controller`), only the step
+       * size.
+       */
       virtual void
-      restore(double step_size, std::optional<State> candidate) = 0;
+      restore(const ControllerMemory<State> &memory) = 0;
 
       /** Whether the controller's state fits in a checkpoint. */
       virtual bool

@@ -1,6 +1,7 @@
 #ifndef rsfcycle_time_newmark_step_h
 #define rsfcycle_time_newmark_step_h
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
 #include <optional>
@@ -65,9 +66,16 @@ namespace rsfcycle
                   double                                  cohesion,
                   std::function<double(const dealii::Point<dim> &)> along_base);
 
-      /** The step of length tau from state `old` at time t. */
+      /**
+       * The step of length tau from state `old` at time t. The fixed-point
+       * iteration starts from the state and the velocity of `guess` if
+       * given (a prediction), else from the old ones.
+       */
       std::optional<BodyState>
-      operator()(const BodyState &old, double t, double tau);
+      operator()(const BodyState &old,
+                 double           t,
+                 double           tau,
+                 const BodyState *guess = nullptr);
 
       /**
        * Iterations of all spatial problems since the last call, then
@@ -75,6 +83,13 @@ namespace rsfcycle
        */
       StepStatistics
       take_work();
+
+      /** Time the state updates in the TimerOutput section "State update". */
+      void
+      set_timer(dealii::TimerOutput *new_timer)
+      {
+        timer = new_timer;
+      }
 
       /** Why the last step failed. */
       const std::string &
@@ -94,6 +109,7 @@ namespace rsfcycle
        */
       bool
       couple(const BodyState                      &old,
+             const std::vector<double>            &alpha_start,
              const solvers::SpatialProblem        &problem,
              std::vector<friction::NodePotential> &potentials,
              double                                t,
@@ -140,8 +156,9 @@ namespace rsfcycle
       const friction::StateLaw                          state_law;
       std::function<double(const dealii::Point<dim> &)> along_base;
 
-      StepStatistics work;
-      std::string    failure;
+      StepStatistics       work;
+      std::string          failure;
+      dealii::TimerOutput *timer = nullptr;
     };
   } // namespace time
 } // namespace rsfcycle

@@ -80,28 +80,23 @@ namespace rsfcycle
         explicit LoopState(output::EventDetector events)
           : events(std::move(events))
         {}
-        State                 state;
-        double                t               = 0;
-        double                tau             = 0;
-        unsigned int          step            = 0;
-        unsigned int          max_fixed_point = 0;
-        unsigned long         total_problems  = 0;
-        double                min_dt = 1e300, max_dt = 0;
-        double                last_output = 0, last_profile = 0;
-        output::EventDetector events;
-        output::FileSizes     file_sizes;
-        bool                  has_candidate = false;
-        State                 candidate;
+        State                   state;
+        double                  t = 0;
+        ControllerMemory<State> controller;
+        unsigned int            step            = 0;
+        unsigned int            max_fixed_point = 0;
+        unsigned long           total_problems  = 0;
+        double                  min_dt = 1e300, max_dt = 0;
+        double                  last_output = 0, last_profile = 0;
+        output::EventDetector   events;
+        output::FileSizes       file_sizes;
 
         template <class Archive>
         void
         serialize(Archive &ar, const unsigned int)
         {
-          ar &state &t &tau &step &max_fixed_point &total_problems &min_dt
-            &max_dt &last_output &last_profile &events &file_sizes
-              &has_candidate;
-          if (has_candidate)
-            ar &candidate;
+          ar &state &t &controller &step &max_fixed_point &total_problems
+            &min_dt &max_dt &last_output &last_profile &events &file_sizes;
         }
       };
 

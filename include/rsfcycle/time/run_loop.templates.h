@@ -71,17 +71,13 @@ namespace rsfcycle
       dealii::TimerOutput::Scope scope(timer, "Checkpoint");
       LoopState                 &s = *loop_state;
       s.file_sizes                 = recorder->sizes();
-      s.tau                        = controller.step_size();
-      const auto next              = controller.candidate();
-      s.has_candidate              = next.has_value();
-      if (s.has_candidate)
-        s.candidate = *next;
+      s.controller                 = controller.memory();
       output::write_checkpoint(dir, [&](boost::archive::binary_oarchive &ar) {
         const std::size_t n_unknowns = model.n_unknowns();
         ar << n_unknowns << s;
         model.save_output(ar);
       });
-      s.candidate = State();
+      s.controller = ControllerMemory<State>();
     }
 
 
@@ -119,7 +115,6 @@ namespace rsfcycle
                               layout.interpolate_event_times));
       LoopState &s = *loop_state;
       s.state      = model.initial_state();
-      s.tau        = controller.step_size();
       if (resume)
         {
           read_checkpoint();
@@ -128,10 +123,9 @@ namespace rsfcycle
         }
       recorder =
         std::make_unique<output::Recorder>(dir, layout, resume, s.file_sizes);
-      controller.restore(s.tau,
-                         s.has_candidate ? std::optional<State>(s.candidate) :
-                                           std::nullopt);
-      s.candidate = State();
+      if (resume)
+        controller.restore(s.controller);
+      s.controller = ControllerMemory<State>();
       if (!resume)
         {
           const Sample sample = model.sample(s.state);

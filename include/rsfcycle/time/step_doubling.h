@@ -138,27 +138,35 @@ namespace rsfcycle
 
       /**
        * The candidate for the next accepted step (one step of step_size()
-       * from the current state), if already computed; a checkpoint stores it
-       * so that a resumed run repeats the uninterrupted one exactly.
+       * from the current state), if already computed.
        */
-      std::optional<State>
-      candidate() const override
+      const std::optional<State> &
+      candidate() const
       {
         return r1;
       }
 
-      void
-      set_candidate(std::optional<State> next)
+      /** The step size and the candidate. */
+      ControllerMemory<State>
+      memory() const override
       {
-        r1 = std::move(next);
-        r2.reset();
+        ControllerMemory<State> memory;
+        memory.controller = "step-doubling";
+        memory.step_size  = tau;
+        if (r1)
+          memory.states.push_back(*r1);
+        return memory;
       }
 
       void
-      restore(const double step_size, std::optional<State> next) override
+      restore(const ControllerMemory<State> &memory) override
       {
-        tau = step_size;
-        set_candidate(std::move(next));
+        tau = memory.step_size;
+        r2.reset();
+        if (memory.states.empty() || memory.controller != "step-doubling")
+          r1.reset();
+        else
+          r1 = memory.states.front();
       }
 
       /** Spatial problems solved (stepper calls) in the last advance(). */

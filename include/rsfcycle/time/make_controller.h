@@ -1,0 +1,55 @@
+#ifndef rsfcycle_time_make_controller_h
+#define rsfcycle_time_make_controller_h
+
+#include <memory>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/time/local_extrapolation.h>
+#include <rsfcycle/time/step_doubling.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    /**
+     * The controller named by `Time stepping/Controller` (fixed steps if
+     * `Adaptive` is false), for any model: its stepper (which may start from
+     * a guess), its distance (14) and how to combine three of its states
+     * into a prediction.
+     */
+    template <typename State>
+    std::unique_ptr<Controller<State>>
+    make_controller(const TimeSteppingParameters                &ts,
+                    typename LocalExtrapolation<State>::Stepper  stepper,
+                    typename LocalExtrapolation<State>::Distance distance,
+                    typename LocalExtrapolation<State>::Combine  combine)
+    {
+      if (ts.controller == "local-extrapolation" && ts.adaptive)
+        return std::make_unique<LocalExtrapolation<State>>(
+          std::move(stepper),
+          std::move(distance),
+          std::move(combine),
+          ts.extrapolated_start,
+          ts.tolerance,
+          ts.initial_step,
+          ts.minimum_step,
+          ts.maximum_step);
+      if (ts.controller != "step-doubling" && ts.controller != "predictor")
+        throw std::invalid_argument(
+          "Time stepping/Controller = " + ts.controller +
+          ": allowed are step-doubling|predictor");
+      return std::make_unique<StepDoubling<State>>(
+        [stepper](const State &s, const double t, const double tau) {
+          return stepper(s, t, tau, nullptr);
+        },
+        std::move(distance),
+        ts.tolerance,
+        ts.initial_step,
+        ts.minimum_step,
+        ts.maximum_step,
+        ts.adaptive);
+    }
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

@@ -130,23 +130,35 @@ namespace rsfcycle
     }
 
 
+    /**
+     * The exact minimiser of the convex function t -> J(v + t c), the root
+     * of its derivative
+     *   D(t) = c^T(A v - r) + t c^T A c + sum_i phi_i'(|y_i|) y_i.c_i/|y_i|,
+     * y_i = v_i + t c_i: along c the quadratic part is a parabola, so only
+     * the contact nodes are evaluated per trial point. The root is
+     * bracketed (D(0) < 0, doubling from t = 1), then found by Newton's
+     * method on D (D' = c^T A c + sum_i c_i^T H_i(y_i) c_i with the friction
+     * Hessians) inside the bracket, bisecting where a Newton step leaves it
+     * or a node passes through 0 (where phi(|y|) has its kink), to the
+     * relative width 1e-12 of the bisection alone. Also returns A c.
+     */
     double
     TNNMG::line_search(const SpatialProblem &problem,
                        const Vector<double> &v,
-                       const Vector<double> &c) const
+                       const Vector<double> &c)
     {
-      // J(v + t c)' = c^T(A v - r) + t c^T A c + sum_i phi_i'(|y_i|)
-      // y_i.c_i/|y_i|
-      const double      c_residual = -(c * residual); // residual = r - A v
-      const double      cAc        = problem.A->matrix_norm_square(c);
-      const ContactSet &contact    = *problem.contact;
+      const double c_residual = -(c * residual); // residual = r - A v
+      problem.A->vmult(Ac, c);
+      const double      cAc     = c * Ac;
+      const ContactSet &contact = *problem.contact;
 
-      const auto derivative = [&](const double t) {
-        double value = c_residual + t * cAc;
+      // D(t) and, where every node moves off 0, D'(t) (else NaN)
+      const auto derivatives = [&](const double t) {
+        std::array<double, 2> value = {{c_residual + t * cAc, cAc}};
         for (unsigned int n = 0; n < contact.nodes.size(); ++n)
           {
-            const ContactNode &node = contact.nodes[n];
-            double             y[2] = {0, 0}, cn[2] = {0, 0};
+            const ContactNode    &node = contact.nodes[n];
+            std::array<double, 2> y{}, cn{};
             for (unsigned int k = 0; k < node.n_dofs; ++k)
               {
                 cn[k] = c[node.dofs[k]];
@@ -157,30 +169,48 @@ namespace rsfcycle
               continue;
             const double                   s   = std::hypot(y[0], y[1]);
             const friction::NodePotential &phi = (*problem.potentials)[n];
-            if (s > 0)
-              value +=
-                phi.derivative(s) * ((y[0] / s) * cn[0] + (y[1] / s) * cn[1]);
-            else
-              value += phi.cohesion_force * c_norm; // right derivative
+            if (!(s > 0))
+              {
+                value[0] += phi.cohesion_force * c_norm; // right derivative
+                value[1] = std::nan("");
+                continue;
+              }
+            std::array<double, 2> grad;
+            std::array<double, 4> hess;
+            friction_gradient_and_hessian(phi, y, node.n_dofs, grad, hess);
+            value[0] += grad[0] * cn[0] + grad[1] * cn[1];
+            value[1] += cn[0] * (hess[0] * cn[0] + hess[1] * cn[1]) +
+                        cn[1] * (hess[2] * cn[0] + hess[3] * cn[1]);
           }
         return value;
       };
 
-      if (!(derivative(0.) < 0))
+      if (!(derivatives(0.)[0] < 0))
         return 0.;
       double lo = 0, hi = 1;
-      while (derivative(hi) < 0 && hi < 1e9)
+      auto   at_hi = derivatives(hi);
+      while (at_hi[0] < 0 && hi < 1e9)
         {
-          lo = hi;
-          hi *= 2;
+          lo    = hi;
+          hi    = 2 * hi;
+          at_hi = derivatives(hi);
         }
-      for (unsigned int it = 0; it < 60 && hi - lo > 1e-12 * hi; ++it)
+      // Newton from the upper end of the bracket, bisection as safeguard
+      double t = hi, D = at_hi[0], dD = at_hi[1];
+      for (unsigned int it = 0; it < 100 && hi - lo > 1e-12 * hi; ++it)
         {
-          const double mid = 0.5 * (lo + hi);
-          if (derivative(mid) < 0)
-            lo = mid;
-          else
-            hi = mid;
+          double next = t - D / dD;
+          if (!(next > lo && next < hi))
+            next = 0.5 * (lo + hi);
+          if (std::abs(next - t) <= 1e-12 * hi)
+            return next;
+          t                 = next;
+          const auto at_t   = derivatives(t);
+          D                 = at_t[0];
+          dD                = at_t[1];
+          (D < 0 ? lo : hi) = t;
+          if (D == 0)
+            return t;
         }
       return 0.5 * (lo + hi);
     }
@@ -264,6 +294,13 @@ namespace rsfcycle
       correction_vector.reinit(n);
       v_old.reinit(n);
       increment.reinit(n);
+      Ac.reinit(n);
+      Av_old.reinit(n);
+      // A v is carried from iteration to iteration (the residual of step 2
+      // and A c of the line search give it), so that the stopping test
+      // costs no matrix product
+      Av.reinit(n);
+      A.vmult(Av, v);
       truncated.assign(n, false);
       hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
 
@@ -272,7 +309,8 @@ namespace rsfcycle
            ++iteration)
         {
           ++stats.iterations;
-          v_old = v;
+          v_old  = v;
+          Av_old = Av;
 
           // 1. Nonlinear block Gauss-Seidel.
           {
@@ -305,16 +343,25 @@ namespace rsfcycle
           scope.reset();
           if (timer != nullptr)
             scope.emplace(*timer, "TNNMG: line search");
+          Av = *problem.rhs;
+          Av -= residual; // A v at the smoothed iterate
           if (std::isfinite(correction_vector.l2_norm()))
             {
               const double step = line_search(problem, v, correction_vector);
               v.add(step, correction_vector);
+              Av.add(step, Ac);
             }
 
+          // ||v - v_old||_A and ||v||_A from the carried products
           increment = v;
           increment -= v_old;
-          const double change   = std::sqrt(A.matrix_norm_square(increment));
-          const double size     = std::sqrt(A.matrix_norm_square(v));
+          Av_old.sadd(-1., 1., Av); // A (v - v_old)
+          // (round-off may make a tiny square negative; NaN stays NaN)
+          const auto root = [](const double x) {
+            return x < 0 ? 0. : std::sqrt(x);
+          };
+          const double change   = root(increment * Av_old);
+          const double size     = root(v * Av);
           stats.relative_change = (size > 0) ? change / size : change;
           if (!std::isfinite(stats.relative_change))
             {

@@ -91,14 +91,14 @@ namespace rsfcycle
       double
       line_search(const SpatialProblem         &problem,
                   const dealii::Vector<double> &v,
-                  const dealii::Vector<double> &c) const;
+                  const dealii::Vector<double> &c);
 
       LinearCorrection    &correction;
       TNNMGControl         control;
       dealii::TimerOutput *timer = nullptr;
 
       dealii::Vector<double> residual, increment, newton_rhs, correction_vector,
-        Ac, v_old;
+        Ac, Av, Av_old, v_old;
       std::vector<bool>                  truncated;
       std::vector<std::array<double, 4>> hessians;
     };

@@ -27,14 +27,13 @@ Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5,6]
 """
 import csv
 import os
-import re
 import shutil
-import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import common  # noqa: E402  (benchmarks/common.py)
 T0, T1 = 520.0, 540.0
 EXPLICIT_DEPTH = 3
 
@@ -63,37 +62,14 @@ ONLY = [v for v in arg("--variants", "").split(",") if v]
 
 
 def base_prm(depth, out, end, extra=""):
-    return f"""include {ROOT}/prm/wedge-2d.prm
-set End time = {end}
-set Output directory = {out}
-set Overwrite output = true
-subsection Mesh
-  set Global refinements = 2
-  set Local refinements = {depth}
-end
-subsection Output
-  set Write VTU = false
-  set Progress interval = 1e9
-  set Checkpoint minutes = 1e6
-end
-{extra}"""
+    return common.wedge_prm(ROOT, depth, out, end, extra)
 
 
 def run(args, log):
-    start = time.time()
-    with open(log, "w") as f:
-        subprocess.run([EXE] + args, stdout=f, stderr=subprocess.STDOUT,
-                       check=True)
-    return time.time() - start
+    return common.run(EXE, args, log)
 
 
-def set_entry(prm_file, name, value):
-    lines = open(prm_file).read().split("\n")
-    for i, line in enumerate(lines):
-        words = line.split("=")[0].split()
-        if words[:1] == ["set"] and " ".join(words[1:]) == name:
-            lines[i] = f"  set {name} = {value}"
-    open(prm_file, "w").write("\n".join(lines))
+set_entry = common.set_entry
 
 
 def window(depth, name, entries):
@@ -114,8 +90,7 @@ def window(depth, name, entries):
     n = int(log.split(" unknowns")[0].split()[-1])
     # the time loop alone (TimerOutput section "Time stepping"): without
     # the program start and the set-up, which do not scale with the cycles
-    stepping = float(re.search(r"\| Time stepping\s+\|\s+\d+\s+\|\s+"
-                               r"([0-9.e+-]+)s", log).group(1))
+    stepping = common.stepping_time(log)
     fp = [int(r["fixed_point_iterations"]) for r in rows]
     tn = [int(r["tnnmg_iterations"]) for r in rows]
     li = [int(r["linear_iterations"]) for r in rows]

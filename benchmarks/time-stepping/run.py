@@ -28,12 +28,12 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import common  # noqa: E402  (benchmarks/common.py)
 T0, T1 = 520.0, 545.0
 TOLERANCES = [1e-5, 1e-6, 1e-7]
 CONTROLLERS = ["step-doubling", "local-extrapolation"]
@@ -58,16 +58,11 @@ RESULTS = os.path.join(HERE, "results.csv")
 
 
 def run(args, log):
-    start = time.time()
-    with open(log, "w") as f:
-        subprocess.run([EXE] + args, stdout=f, stderr=subprocess.STDOUT,
-                       check=True)
-    return time.time() - start
+    return common.run(EXE, args, log)
 
 
-def stepping_time(log):
-    return float(re.search(r"\| Time stepping\s+\|\s+\d+\s+\|\s+"
-                           r"([0-9.e+-]+)s", log).group(1))
+stepping_time = common.stepping_time
+set_entry = common.set_entry
 
 
 def counts(rows):
@@ -149,15 +144,6 @@ def slider_part():
 
 
 # ----------------------------------------------------------------- wedge
-def set_entry(prm_file, name, value):
-    lines = open(prm_file).read().split("\n")
-    for i, line in enumerate(lines):
-        words = line.split("=")[0].split()
-        if words[:1] == ["set"] and " ".join(words[1:]) == name:
-            lines[i] = f"  set {name} = {value}"
-    open(prm_file, "w").write("\n".join(lines))
-
-
 def wedge_window(name, controller, tol, extrapolate=True):
     pre = os.path.join(WORK, f"wedge-pre-{DEPTH}")
     out = os.path.join(WORK, f"wedge-{DEPTH}-{name}")
@@ -186,20 +172,7 @@ def wedge_part():
         os.makedirs(WORK, exist_ok=True)
         prm = pre + ".prm"
         with open(prm, "w") as f:
-            f.write(f"""include {ROOT}/prm/wedge-2d.prm
-set End time = {T0}
-set Output directory = {pre}
-set Overwrite output = true
-subsection Mesh
-  set Global refinements = 2
-  set Local refinements = {DEPTH}
-end
-subsection Output
-  set Write VTU = false
-  set Progress interval = 1e9
-  set Checkpoint minutes = 1e6
-end
-""")
+            f.write(common.wedge_prm(ROOT, DEPTH, pre, T0))
         t = run([prm], pre + ".log")
         print(f"preload to {T0} s: {t:.0f} s", flush=True)
     _, ref_counts, ref = wedge_window("reference", "step-doubling", 1e-8)
@@ -248,8 +221,10 @@ def table():
                 return f"{float(v):.3g}"
             except ValueError:
                 return v or "–"
+        start = ("–" if r["controller"] == "step-doubling" else
+                 "yes" if r["extrapolated_start"] == "True" else "no")
         print(f"| {r['case']} | {r['controller']} | {g('tolerance')} | "
-              f"{r['extrapolated_start']} | {r['steps']} | "
+              f"{start} | {r['steps']} | "
               f"{r['spatial_problems']} | {g('fp_per_step')} | "
               f"{g('tnnmg_per_problem')} | {g('wall_s')} | "
               f"{g('error_start')} | {g('error_peak')} | "

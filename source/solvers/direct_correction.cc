@@ -1,0 +1,187 @@
+// The exact linear correction of TNNMG (DirectCorrection, declared in
+// tnnmg.h): CHOLMOD on the free non-contact unknowns and a dense Schur
+// complement on the contact dofs.
+#include <cmath>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <rsfcycle/solvers/sparse_cholesky.h>
+#include <rsfcycle/solvers/tnnmg.h>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    using dealii::SparseMatrix;
+    using dealii::Vector;
+
+    struct DirectCorrection::Factorization
+    {
+      double                       key = 0;
+      dealii::SparsityPattern      pattern;
+      dealii::SparseMatrix<double> A_II;
+      SparseCholesky               lu;
+      dealii::FullMatrix<double>   schur; // n_c x n_c
+      dealii::FullMatrix<double>   Z;     // A_II^{-1} A_Ic
+    };
+
+
+    DirectCorrection::DirectCorrection()  = default;
+    DirectCorrection::~DirectCorrection() = default;
+
+
+    const DirectCorrection::Factorization &
+    DirectCorrection::factorization(const TruncatedNewtonSystem &system)
+    {
+      for (const auto &f : cache)
+        if (f->key == system.matrix_key)
+          return *f;
+
+      const SparseMatrix<double> &A       = *system.A;
+      const ContactSet           &contact = *system.contact;
+      const global_dof_index      n       = A.m();
+      if (interior_index.size() != n)
+        {
+          // Interior: free dofs without friction (fixed ones are truncated
+          // and not contact dofs).
+          interior.clear();
+          contact_dofs.clear();
+          interior_index.assign(n, -1);
+          contact_index.assign(n, -1);
+          for (global_dof_index i = 0; i < n; ++i)
+            if (contact.dof_to_node[i] >= 0)
+              {
+                contact_index[i] = contact_dofs.size();
+                contact_dofs.push_back(i);
+              }
+            else if (!(*system.truncated)[i])
+              {
+                interior_index[i] = interior.size();
+                interior.push_back(i);
+              }
+        }
+
+      static int n_setups = 0;
+      if (std::getenv("RSF_DEBUG"))
+        std::cerr << "setup " << ++n_setups << " key " << system.matrix_key
+                  << "\n";
+      if (cache.size() >= 8)
+        cache.erase(cache.begin());
+      auto f = std::make_unique<Factorization>();
+      f->key = system.matrix_key;
+
+      const unsigned int             n_I = interior.size();
+      dealii::DynamicSparsityPattern dsp(n_I, n_I);
+      for (unsigned int k = 0; k < n_I; ++k)
+        for (auto it = A.begin(interior[k]); it != A.end(interior[k]); ++it)
+          if (interior_index[it->column()] >= 0)
+            dsp.add(k, interior_index[it->column()]);
+      f->pattern.copy_from(dsp);
+      f->A_II.reinit(f->pattern);
+      for (unsigned int k = 0; k < n_I; ++k)
+        for (auto it = A.begin(interior[k]); it != A.end(interior[k]); ++it)
+          if (interior_index[it->column()] >= 0)
+            f->A_II.set(k, interior_index[it->column()], it->value());
+      f->lu.factorize(f->A_II);
+
+      const unsigned int n_c = contact_dofs.size();
+      f->schur.reinit(n_c, n_c);
+      // A symmetric: column j of A_Ic is row contact_dofs[j] restricted to I.
+      dealii::FullMatrix<double> A_Ic(n_I, n_c);
+      for (unsigned int j = 0; j < n_c; ++j)
+        for (auto it = A.begin(contact_dofs[j]); it != A.end(contact_dofs[j]);
+             ++it)
+          {
+            if (interior_index[it->column()] >= 0)
+              A_Ic(interior_index[it->column()], j) = it->value();
+            else if (contact_index[it->column()] >= 0)
+              f->schur(contact_index[it->column()], j) += it->value();
+          }
+      f->lu.solve(A_Ic, f->Z);
+      // S = A_cc - A_Ic^T Z
+      dealii::FullMatrix<double> product(n_c, n_c);
+      A_Ic.Tmmult(product, f->Z);
+      f->schur.add(-1., product);
+      cache.push_back(std::move(f));
+      return *cache.back();
+    }
+
+
+    unsigned int
+    DirectCorrection::solve(const TruncatedNewtonSystem &system,
+                            const Vector<double>        &rhs,
+                            Vector<double>              &c)
+    {
+      const Factorization        &f         = factorization(system);
+      const SparseMatrix<double> &A         = *system.A;
+      const ContactSet           &contact   = *system.contact;
+      const std::vector<bool>    &truncated = *system.truncated;
+      const unsigned int          n_I       = interior.size();
+
+      // Active contact dofs and their position in contact_dofs.
+      std::vector<unsigned int> active;
+      for (unsigned int j = 0; j < contact_dofs.size(); ++j)
+        if (!truncated[contact_dofs[j]])
+          active.push_back(j);
+      const unsigned int n_a = active.size();
+
+      // y = A_II^{-1} b_I
+      b_I.reinit(n_I, true);
+      for (unsigned int k = 0; k < n_I; ++k)
+        b_I[k] = rhs[interior[k]];
+      f.lu.solve(b_I, y);
+
+      c = 0;
+      if (n_a > 0)
+        {
+          // (S_aa + H_aa) x_a = b_a - A_aI y, with S_aa + H_aa formed
+          // directly in the LAPACK matrix (n_a is small: contact dofs only)
+          dealii::LAPACKFullMatrix<double> S(n_a, n_a);
+          Vector<double>                   x_a(n_a);
+          std::vector<int> active_position(contact_dofs.size(), -1);
+          for (unsigned int p = 0; p < n_a; ++p)
+            {
+              active_position[active[p]] = p;
+              const global_dof_index row = contact_dofs[active[p]];
+              x_a[p]                     = rhs[row];
+              for (auto it = A.begin(row); it != A.end(row); ++it)
+                if (interior_index[it->column()] >= 0)
+                  x_a[p] -= it->value() * y[interior_index[it->column()]];
+              for (unsigned int q = 0; q < n_a; ++q)
+                S(p, q) = f.schur(active[p], active[q]);
+            }
+          // Hessian blocks of the active nodes.
+          for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+            {
+              const ContactNode &node = contact.nodes[k];
+              for (unsigned int i = 0; i < node.n_dofs; ++i)
+                for (unsigned int j = 0; j < node.n_dofs; ++j)
+                  {
+                    const int pi = active_position[contact_index[node.dofs[i]]],
+                              pj = active_position[contact_index[node.dofs[j]]];
+                    if (pi >= 0 && pj >= 0)
+                      S(pi, pj) +=
+                        (*system.node_hessians)[k][node.n_dofs * i + j];
+                  }
+            }
+          S.compute_lu_factorization();
+          S.solve(x_a);
+          for (unsigned int p = 0; p < n_a; ++p)
+            c[contact_dofs[active[p]]] = x_a[p];
+
+          // x_I = A_II^{-1} (b_I - A_Ia x_a) = y - Z_a x_a
+          for (unsigned int k = 0; k < n_I; ++k)
+            {
+              double sum = 0;
+              for (unsigned int p = 0; p < n_a; ++p)
+                sum += f.Z(k, active[p]) * x_a[p];
+              y[k] -= sum;
+            }
+        }
+      for (unsigned int k = 0; k < n_I; ++k)
+        c[interior[k]] = y[k];
+      return 1;
+    }
+  } // namespace solvers
+} // namespace rsfcycle

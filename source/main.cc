@@ -127,15 +127,23 @@ namespace
 
   /**
    * Build the scene's simulation (bad input fails here, before anything is
-   * written), prepare the run folder and the log, run. Returns false if the
-   * run was interrupted by a signal.
+   * written), start MPI if it needs it (one thread either way), prepare the
+   * run folder and the log, run. Returns false if the run was interrupted by
+   * a signal.
    */
   bool
-  run(const rsfcycle::Parameters &parameters,
-      dealii::ParameterHandler   &prm,
-      const bool                  resume)
+  run(const rsfcycle::Parameters                              &parameters,
+      dealii::ParameterHandler                                &prm,
+      const bool                                               resume,
+      std::optional<dealii::Utilities::MPI::MPI_InitFinalize> &mpi,
+      int                                                     &argc,
+      char                                                  **&argv)
   {
     const auto simulation = rsfcycle::scenes::make_simulation(parameters, prm);
+    if (simulation->needs_mpi())
+      mpi.emplace(argc, argv, 1);
+    else
+      dealii::MultithreadInfo::set_thread_limit(1);
     if (!resume)
       prepare_output_directory(parameters.run.output_directory,
                                parameters.run.overwrite_output);
@@ -152,9 +160,10 @@ int
 main(int argc, char **argv)
 {
   // Trilinos (the amg correction) needs MPI; one process, one thread. It is
-  // started only for a run of a continuum scene: its start-up is most of
-  // the program start (benchmarks/time-stepping/README.md), which --help,
-  // --print-parameters, bad input and the spring-slider need not pay.
+  // started only for a run whose simulation needs it (run()): its start-up
+  // is most of the program start (benchmarks/time-stepping/README.md), which
+  // --help, --print-parameters, bad input and the spring-slider need not
+  // pay.
   std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
   try
     {
@@ -206,11 +215,7 @@ main(int argc, char **argv)
       const bool resume = !resume_dir.empty();
       if (resume)
         parameters.run.output_directory = resume_dir;
-      if (parameters.run.scene == "spring-slider")
-        dealii::MultithreadInfo::set_thread_limit(1); // no mesh, no MPI
-      else
-        mpi.emplace(argc, argv, 1);
-      if (!run(parameters, prm, resume))
+      if (!run(parameters, prm, resume, mpi, argc, argv))
         return 130;
     }
   catch (std::exception &exc)

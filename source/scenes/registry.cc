@@ -78,6 +78,12 @@ namespace rsfcycle
           return !slider.run(prm, log, resume).interrupted;
         }
 
+        bool
+        needs_mpi() const override
+        {
+          return false;
+        }
+
       private:
         SpringSlider slider;
       };

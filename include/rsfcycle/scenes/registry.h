@@ -49,6 +49,16 @@ namespace rsfcycle
        */
       virtual bool
       run(const ParameterHandler &prm, std::ostream &log, bool resume) = 0;
+
+      /**
+       * Whether the run needs MPI (Trilinos, distributed meshes); the
+       * driver starts it only then.
+       */
+      virtual bool
+      needs_mpi() const
+      {
+        return true;
+      }
     };
 
     /**

@@ -136,16 +136,6 @@ namespace rsfcycle
         forget();
       }
 
-      /**
-       * The candidate for the next accepted step (one step of step_size()
-       * from the current state), if already computed.
-       */
-      const std::optional<State> &
-      candidate() const
-      {
-        return r1;
-      }
-
       /** The step size and the candidate. */
       ControllerMemory<State>
       memory() const override

@@ -98,7 +98,7 @@ namespace rsfcycle
                       "Adaptive steps chosen by the Controller (true) or a "
                       "fixed step, the Initial step (false)");
     prm.declare_entry("Controller",
-                      "step-doubling",
+                      "local-extrapolation",
                       Selection("step-doubling|local-extrapolation"),
                       "How adaptive steps are chosen. step-doubling: the "
                       "paper's controller (MODEL.md 4.3: two steps of tau "

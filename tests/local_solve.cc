@@ -64,13 +64,14 @@ main()
   NodePotential stable; // rate strengthening, Table 1
   stable.params.a       = 0.02;
   stable.params.b       = 0.005;
-  stable.alpha          = 0;
   stable.normal_force   = 3.0;  // N/m
   stable.cohesion_force = 0.05; // N/m
+  stable.set_state(0);
 
   NodePotential unstable = stable; // the patch, Table 1
   unstable.params.a      = 0.002;
   unstable.params.b      = 0.017;
+  unstable.set_state(0);
 
   // 2D: one tangential component.
   check<1>("2D stick", {{1e4}}, {{0.049}}, stable);

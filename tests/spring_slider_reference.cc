@@ -37,6 +37,7 @@ namespace
                                 dir +
                                 "\n"
                                 "subsection Time stepping\n"
+                                "  set Controller = step-doubling\n"
                                 "  set Tolerance = " +
                                 tol.str() +
                                 "\n"
@@ -77,7 +78,7 @@ main()
 {
   initlog(6);
   using dealii::deallog;
-  const auto ours      = run("step-doubling", 1e-7, "output-ours");
+  const auto ours      = run("newmark", 1e-7, "output-ours");
   const auto reference = run("arkode", 1e-11, "output-reference");
 
   const double v0 = 1e-6;

@@ -44,6 +44,7 @@ main()
                                   law +
                                   "\n"
                                   "subsection Time stepping\n"
+                                  "  set Controller = step-doubling\n"
                                   "  set Tolerance = 1e-6\n"
                                   "  set Initial step = 1e-5\n"
                                   "  set Maximum step = 1e-4\n"

@@ -139,6 +139,7 @@ def write_prm(name, end, max_step, p):
 set End time         = {end:.15g}
 set Output directory = {d}
 subsection Time stepping
+  set Controller   = step-doubling
   set Adaptive     = true
   set Tolerance    = 1e-5
   set Initial step = 1e-3
@@ -158,7 +159,7 @@ subsection Output
   set Checkpoint minutes = 0
 end
 subsection Spring slider
-  set Integrator           = step-doubling
+  set Integrator           = newmark
 {entries}
 end
 """)

@@ -97,7 +97,7 @@ subsection Output
 end
 subsection Spring slider
   set Initial slip rate = 1.01e-6
-  set Integrator        = {"arkode" if arkode else "step-doubling"}
+  set Integrator        = {"arkode" if arkode else "newmark"}
 end
 """)
     return d, prm

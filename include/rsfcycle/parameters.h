@@ -41,7 +41,7 @@ namespace rsfcycle
   struct TimeSteppingParameters
   {
     bool        adaptive           = true;
-    std::string controller         = "step-doubling";
+    std::string controller         = "local-extrapolation";
     bool        extrapolated_start = true;
     double      tolerance          = 1e-5;
     double      initial_step       = 1e-2;

@@ -37,21 +37,38 @@ namespace rsfcycle
     }
 
 
+    CoefficientAndDerivative
+    friction_coefficient_and_derivative(const Parameters &p,
+                                        const double      log_v_theta,
+                                        const double      V)
+    {
+      const auto capped_exp = [](const double exponent) {
+        return exponent > max_exponent ? derivative_cap : std::exp(exponent);
+      };
+      if (!(V > 0))
+        return {0., capped_exp(std::log(p.a) - log_two - log_v_theta)};
+      const double log_z = std::log(V) - log_two - log_v_theta;
+      if (log_z > 0)
+        {
+          // asinh(z) = log z + log(1 + sqrt(1 + z^-2)); z^-2 <= 1 here;
+          // d mu / dV = a / (V sqrt(1 + z^-2))
+          const double root = std::sqrt(1. + std::exp(-2. * log_z));
+          return {p.a * (log_z + std::log1p(root)), p.a / (V * root)};
+        }
+      // d mu / dV = a / (2 V_theta sqrt(1 + z^2)), in log space
+      const double z = std::exp(log_z);
+      return {p.a * std::asinh(z),
+              capped_exp(std::log(p.a) - log_two - log_v_theta -
+                         0.5 * std::log1p(z * z))};
+    }
+
+
     double
     friction_coefficient(const Parameters &p,
                          const double      alpha,
                          const double      V)
     {
-      if (!(V > 0))
-        return 0.;
-      const double log_z = std::log(V) - log_two - p.log_v_theta(alpha);
-      if (log_z > 0)
-        {
-          // asinh(z) = log z + log(1 + sqrt(1 + z^-2)); z^-2 <= 1 here.
-          const double z_m2 = std::exp(-2. * log_z);
-          return p.a * (log_z + std::log1p(std::sqrt(1. + z_m2)));
-        }
-      return p.a * std::asinh(std::exp(log_z));
+      return friction_coefficient_and_derivative(p, p.log_v_theta(alpha), V).mu;
     }
 
 
@@ -60,20 +77,8 @@ namespace rsfcycle
                                     const double      alpha,
                                     const double      V)
     {
-      const double log_v_theta = p.log_v_theta(alpha);
-      if (V > 0)
-        {
-          const double log_z = std::log(V) - log_two - log_v_theta;
-          if (log_z > 0)
-            // a / (V sqrt(1 + z^-2))
-            return p.a / (V * std::sqrt(1. + std::exp(-2. * log_z)));
-          const double z = std::exp(log_z);
-          const double exponent =
-            std::log(p.a) - log_two - log_v_theta - 0.5 * std::log1p(z * z);
-          return exponent > max_exponent ? derivative_cap : std::exp(exponent);
-        }
-      const double exponent = std::log(p.a) - log_two - log_v_theta;
-      return exponent > max_exponent ? derivative_cap : std::exp(exponent);
+      return friction_coefficient_and_derivative(p, p.log_v_theta(alpha), V)
+        .derivative;
     }
 
 
@@ -158,7 +163,8 @@ namespace rsfcycle
     LocalSolution<d>
     solve_local_problem(const std::array<double, d * d> &A,
                         const std::array<double, d>     &rho,
-                        const NodePotential             &phi)
+                        const NodePotential             &phi,
+                        const std::array<double, d>     *guess)
     {
       LocalSolution<d> result;
       const double     rho_norm = norm<d>(rho);
@@ -187,62 +193,64 @@ namespace rsfcycle
               ey += e[i] * y[i];
             ds = -s * ey;
           }
-        dF_dl = lambda * (s + lambda * ds - phi.second_derivative(s) * ds);
-        return lambda * s - phi.derivative(s);
+        const auto [d1, d2] = phi.derivatives(s);
+        dF_dl               = lambda * (s + lambda * ds - d2 * ds);
+        return lambda * s - d1;
       };
 
-      // Bracket the root. Start where lambda = phi'(s0)/s0 with s0 = |A^-1
-      // rho| (an upper bound of s), then expand by factors of 10.
-      const double     s0 = norm<d>(shifted_solve<d>(A, rho, 0.));
-      double           l  = std::log(std::max(phi.derivative(s0) / s0, 1e-300));
-      double           dF;
-      double           f  = F(l, dF);
-      double           lo = l, hi = l;
-      constexpr double l_min = -690., l_max = 690.;
-      if (f < 0)
-        {
-          while (f < 0 && hi < l_max)
-            {
-              lo = hi;
-              hi = std::min(hi + 2.3, l_max);
-              f  = F(hi, dF);
-            }
-          if (f < 0)
-            {
-              // s(lambda) < 1e-300 |rho|/|A|: the node does not move in
-              // double precision.
-              result.stuck = true;
-              return result;
-            }
-        }
-      else
-        {
-          while (f > 0 && lo > l_min)
-            {
-              hi = lo;
-              lo = std::max(lo - 2.3, l_min);
-              f  = F(lo, dF);
-            }
-        }
-
-      // Safeguarded Newton in l on [lo, hi].
-      l = 0.5 * (lo + hi);
+      // Safeguarded Newton in l, started where lambda = phi'(s)/s for the
+      // guess s (its value at the solution), or else for s0 = |A^-1 rho| (an
+      // upper bound of s). Until F has changed sign the iterates move toward
+      // the root by at most 2.3 (a factor of 10 in lambda); after that they
+      // stay inside the bracket [lo, hi] (bisection where Newton would leave
+      // it).
+      const double s_guess = guess ? norm<d>(*guess) : 0.;
+      const double s_start =
+        (s_guess > 0) ? s_guess : norm<d>(shifted_solve<d>(A, rho, 0.));
+      constexpr double l_min = -690., l_max = 690., max_move = 2.3;
+      double l = std::clamp(std::log(std::max(phi.derivative(s_start) / s_start,
+                                              1e-300)),
+                            l_min,
+                            l_max);
+      double lo = l_min, hi = l_max;
+      bool   above = false, below = false; // F > 0 / F < 0 seen
       for (unsigned int it = 0; it < 200; ++it)
         {
           ++result.iterations;
-          f = F(l, dF);
+          double       dF;
+          const double f = F(l, dF);
           if (f == 0)
             break;
           if (f < 0)
-            lo = l;
+            {
+              if (l >= l_max)
+                {
+                  // s(lambda) < 1e-300 |rho|/|A|: the node does not move in
+                  // double precision.
+                  result.stuck = true;
+                  return result;
+                }
+              lo    = l;
+              below = true;
+            }
           else
-            hi = l;
-          double l_new = (dF > 0) ? l - f / dF : 0.5 * (lo + hi);
+            {
+              if (l <= l_min)
+                break;
+              hi    = l;
+              above = true;
+            }
+          const double towards = (f < 0) ? max_move : -max_move;
+          double       l_new   = (dF > 0) ? l - f / dF : l + towards;
+          if (!(above && below))
+            l_new = std::clamp(l_new, l - max_move, l + max_move);
           if (!(l_new > lo && l_new < hi))
-            l_new = 0.5 * (lo + hi);
+            l_new = (above && below) ? 0.5 * (lo + hi) :
+                                       std::clamp(l + towards, l_min, l_max);
           const double step = std::abs(l_new - l);
           l                 = l_new;
-          if (step < 1e-14 * std::max(1., std::abs(l)) || hi - lo < 1e-14)
+          if (step < 1e-14 * std::max(1., std::abs(l)) ||
+              (above && below && hi - lo < 1e-14))
             break;
         }
       result.x = shifted_solve<d>(A, rho, std::exp(l));
@@ -252,10 +260,12 @@ namespace rsfcycle
     template LocalSolution<1>
     solve_local_problem<1>(const std::array<double, 1> &,
                            const std::array<double, 1> &,
-                           const NodePotential &);
+                           const NodePotential &,
+                           const std::array<double, 1> *);
     template LocalSolution<2>
     solve_local_problem<2>(const std::array<double, 4> &,
                            const std::array<double, 2> &,
-                           const NodePotential &);
+                           const NodePotential &,
+                           const std::array<double, 2> *);
   } // namespace friction
 } // namespace rsfcycle

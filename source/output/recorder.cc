@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <filesystem>
-#include <iomanip>
 #include <rsfcycle/output/recorder.h>
 #include <stdexcept>
 
@@ -50,8 +49,6 @@ namespace rsfcycle
           throw std::runtime_error("cannot open " + files[i] + " for writing");
       if (!resume)
         write_headers(layout);
-      series << std::setprecision(10);
-      profile << std::setprecision(8);
     }
 
 
@@ -96,26 +93,25 @@ namespace rsfcycle
       const double max_rate =
         (fastest == sample.slip_rates.end()) ? 0. : *fastest;
       const auto &counts = sample.statistics;
-      series << t << "," << step_size << "," << counts.fixed_point_iterations
-             << "," << counts.tnnmg_iterations << ","
-             << counts.linear_iterations << "," << spatial_problems << ","
-             << max_rate;
+      series_row << t << step_size << counts.fixed_point_iterations
+                 << counts.tnnmg_iterations << counts.linear_iterations
+                 << spatial_problems << max_rate;
       for (const double value : sample.observations)
-        series << "," << value;
+        series_row << value;
       // the work of every spatial problem solved for this step, the
       // controller's comparisons and rejected attempts included
-      series << "," << work.tnnmg_iterations << "," << work.linear_iterations
-             << "\n";
+      series_row << work.tnnmg_iterations << work.linear_iterations;
+      series_row.write_line(series);
     }
 
 
     void
     Recorder::write_profile(const double t, const std::vector<double> &rates)
     {
-      profile << t;
+      profile_row << t;
       for (const unsigned int k : order)
-        profile << "," << rates[k];
-      profile << "\n";
+        profile_row << rates[k];
+      profile_row.write_line(profile);
     }
 
 

@@ -36,13 +36,13 @@ namespace rsfcycle
     {
       prm.enter_subsection("Spring slider");
       prm.declare_entry("Integrator",
-                        "step-doubling",
-                        Selection("step-doubling|arkode"),
-                        "step-doubling: the scheme of the wedge (Newmark, "
-                        "rate/state coupling, step doubling); arkode: the "
-                        "SUNDIALS ARKODE reference with relative tolerance "
-                        "= the step-doubling Tolerance (requires "
-                        "Cohesion = 0)");
+                        "newmark",
+                        Selection("newmark|arkode"),
+                        "newmark: the scheme of the wedge (Newmark, "
+                        "rate/state coupling, steps chosen by Time "
+                        "stepping/Controller); arkode: the SUNDIALS ARKODE "
+                        "reference with relative tolerance = Time "
+                        "stepping/Tolerance (requires Cohesion = 0)");
       prm.declare_entry("Mass",
                         "0",
                         Double(0),
@@ -229,8 +229,10 @@ namespace rsfcycle
         v,
         alpha,
         [&](const double a, double &x) {
-          phi.alpha = a;
-          x = friction::solve_local_problem<1>({{A}}, {{rhs}}, phi).x[0];
+          phi.set_state(a);
+          const std::array<double, 1> guess = {{x}};
+          x =
+            friction::solve_local_problem<1>({{A}}, {{rhs}}, phi, &guess).x[0];
           return std::isfinite(x);
         },
         [&](const double v_new, const double weight_new, double &a) {

@@ -62,10 +62,6 @@ namespace rsfcycle
               }
         }
 
-      static int n_setups = 0;
-      if (std::getenv("RSF_DEBUG"))
-        std::cerr << "setup " << ++n_setups << " key " << system.matrix_key
-                  << "\n";
       if (cache.size() >= 8)
         cache.erase(cache.begin());
       auto f = std::make_unique<Factorization>();

@@ -27,8 +27,7 @@ namespace rsfcycle
         hess           = {{0., 0., 0., 0.}};
         if (!(s > 0))
           return;
-        const double g  = phi.derivative(s);
-        const double gp = phi.second_derivative(s);
+        const auto [g, gp] = phi.derivatives(s);
         for (unsigned int k = 0; k < d; ++k)
           grad[k] = g * y[k] / s;
         if (d == 1)
@@ -107,15 +106,22 @@ namespace rsfcycle
 
           const friction::NodePotential &phi =
             (*problem.potentials)[node_index];
+          // the node's current value is the guess of the local solve
           if (d == 1)
             {
-              const auto sol =
-                friction::solve_local_problem<1>({{A_TT[0]}}, {{rho[0]}}, phi);
+              const std::array<double, 1> guess = {{v[node.dofs[0]]}};
+              const auto sol  = friction::solve_local_problem<1>({{A_TT[0]}},
+                                                                {{rho[0]}},
+                                                                phi,
+                                                                &guess);
               v[node.dofs[0]] = sol.x[0];
             }
           else
             {
-              const auto sol = friction::solve_local_problem<2>(A_TT, rho, phi);
+              const std::array<double, 2> guess = {
+                {v[node.dofs[0]], v[node.dofs[1]]}};
+              const auto sol =
+                friction::solve_local_problem<2>(A_TT, rho, phi, &guess);
               v[node.dofs[0]] = sol.x[0];
               v[node.dofs[1]] = sol.x[1];
             }

@@ -122,7 +122,7 @@ namespace rsfcycle
                                       Vector<double>            &v) {
         ++k;
         for (unsigned int i = 0; i < n_nodes; ++i)
-          potentials[i].alpha = alpha_k[i];
+          potentials[i].set_state(alpha_k[i]);
         // Inexact fixed point: the early iterations, whose state is still
         // far from converged, get a looser TNNMG tolerance (d is the state
         // distance of the previous iteration; d_0 = 1).

@@ -28,23 +28,25 @@ subsection Output
 end
 PRM
 }
-# the stick-slip spring-slider at a tight tolerance: long enough (about
-# 10^5 steps) to be killed while it runs
+# the stick-slip spring-slider with the paper's step doubling at a tight
+# tolerance: long enough (about 10^5 steps) to be killed while it runs
 make_slider_prm() {
   cat > "$1.prm" <<PRM
 include $src/prm/spring-slider.prm
 set End time = 3000
 set Output directory = $1
 subsection Time stepping
-  set Tolerance = 1e-9
+  set Controller = step-doubling
+  set Tolerance  = 1e-9
 end
 subsection Output
   set Checkpoint steps = 2000
 end
 PRM
 }
-# the same with the local-extrapolation controller, whose checkpoint holds
-# its history and a pending half step
+# the same with the local-extrapolation controller (the default; the wedge
+# above runs with it too), whose checkpoint holds its history and a pending
+# half step
 make_slider_le_prm() {
   make_slider_prm "$1"
   printf 'subsection Time stepping\n  set Controller = local-extrapolation\nend\n' >> "$1.prm"

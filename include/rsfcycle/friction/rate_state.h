@@ -3,7 +3,9 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <utility>
 
 namespace rsfcycle
 {
@@ -91,32 +93,79 @@ namespace rsfcycle
                  double            tau);
 
     /**
+     * The friction coefficient (2) and its derivative d mu / dV at V >= 0
+     * for a given log V_theta (the per-node quantity that depends only on
+     * the state): the same values as friction_coefficient() and
+     * friction_coefficient_derivative(), with one logarithm of V and one
+     * exponential shared between them.
+     */
+    struct CoefficientAndDerivative
+    {
+      double mu;
+      double derivative;
+    };
+
+    CoefficientAndDerivative
+    friction_coefficient_and_derivative(const Parameters &p,
+                                        double            log_v_theta,
+                                        double            V);
+
+    /**
      * The friction potential of one contact node with lumped quadrature,
      * phi(s) = N int_0^s mu(r) dr + W s, where N = w_i |sigma_n,i| is the
      * node's normal force and W = w_i C its cohesion force (MODEL.md (13)).
-     * Only its derivatives are needed by the solver.
+     * Only its derivatives are needed by the solver. The state alpha is set
+     * with set_state(), which also computes log V_theta(alpha) once for the
+     * many evaluations of a fixed-point iteration.
      */
     struct NodePotential
     {
       Parameters params;
-      double     alpha          = 0;
       double     normal_force   = 0; // N = w |sigma_n|  [N/m in 2D, N in 3D]
       double     cohesion_force = 0; // W = w C
+
+      /** Set the state alpha (after the parameters). */
+      void
+      set_state(const double new_alpha)
+      {
+        alpha       = new_alpha;
+        log_v_theta = params.log_v_theta(alpha);
+      }
+
+      /** The state alpha of the last set_state(). */
+      double
+      state() const
+      {
+        return alpha;
+      }
 
       /** phi'(s) = N mu(s) + W for s > 0; phi'(0+) = W. */
       double
       derivative(const double s) const
       {
-        return normal_force * friction_coefficient(params, alpha, s) +
-               cohesion_force;
+        return derivatives(s).first;
       }
 
       /** phi''(s) = N mu'(s). */
       double
       second_derivative(const double s) const
       {
-        return normal_force * friction_coefficient_derivative(params, alpha, s);
+        return derivatives(s).second;
       }
+
+      /** phi'(s) and phi''(s) together (one logarithm of s). */
+      std::pair<double, double>
+      derivatives(const double s) const
+      {
+        const auto mu =
+          friction_coefficient_and_derivative(params, log_v_theta, s);
+        return {normal_force * mu.mu + cohesion_force,
+                normal_force * mu.derivative};
+      }
+
+    private:
+      double alpha       = 0;
+      double log_v_theta = std::numeric_limits<double>::quiet_NaN();
     };
 
     /** Result of one per-node local solve. */
@@ -139,13 +188,16 @@ namespace rsfcycle
      * vanishes; F is increasing in lambda, and the root is found by a
      * safeguarded Newton iteration in log lambda. For d = 1 this is the
      * monotone scalar equation a s + phi'(s) = |rho|; for d = 2 it handles an
-     * anisotropic A exactly.
+     * anisotropic A exactly. A guess of x (the node's last value) only
+     * chooses where the iteration starts: near the solution it converges in
+     * two or three evaluations instead of about eight.
      */
     template <int d>
     LocalSolution<d>
     solve_local_problem(const std::array<double, d * d> &A,
                         const std::array<double, d>     &rho,
-                        const NodePotential             &phi);
+                        const NodePotential             &phi,
+                        const std::array<double, d>     *guess = nullptr);
   } // namespace friction
 } // namespace rsfcycle
 

@@ -2,6 +2,7 @@
 #define rsfcycle_output_recorder_h
 
 #include <fstream>
+#include <rsfcycle/output/csv_row.h>
 #include <rsfcycle/output/events.h>
 #include <rsfcycle/time/model.h>
 #include <string>
@@ -76,6 +77,7 @@ namespace rsfcycle
       write_headers(const time::Layout &layout);
 
       std::ofstream             series, profile, catalogue;
+      CsvRow                    series_row{10}, profile_row{8};
       std::vector<unsigned int> order; // node order along the base
     };
   } // namespace output

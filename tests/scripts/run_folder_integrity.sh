@@ -19,9 +19,14 @@
 #    final checkpoint is then rewritten): one line naming checkpoint.tmp,
 #    checkpoint.bin and .prev unchanged and no temporary file left; resumed
 #    without the limit, the run ends as before.
+# A full disk, where a tmpfs can be mounted (else skipped with a message):
+# the spring-slider in 128 KiB ends with one line naming the file and "No
+# space left on device"; with the space freed, --resume gives the
+# uninterrupted run's events.csv and time-series.csv.
 # Usage: run_folder_integrity.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
+umount "$work/disk" 2> /dev/null # left mounted by a killed earlier run
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
 n_pass=0; n_fail=0
 pass() { n_pass=$((n_pass + 1)); }
@@ -41,11 +46,11 @@ subsection Output
 end
 PRM
 }
-make_slider_prm() { # name
+make_slider_prm() { # name [, output directory]
   cat > "$1.prm" <<PRM
 include $src/prm/spring-slider.prm
 set End time = 500
-set Output directory = $1
+set Output directory = ${2:-$1}
 subsection Output
   set Checkpoint steps = 200
 end
@@ -183,6 +188,38 @@ else
     pass; echo "ckpt: resumed without the limit: same records and checkpoint"
   else
     fail "resume after the failed checkpoint"
+  fi
+fi
+
+# A full disk: the spring-slider in a tmpfs of 128 KiB, where mounting is
+# allowed (root); then the space is freed (remounted with 1 MiB) and the
+# run resumed.
+mkdir -p disk
+if ! mount -t tmpfs -o size=128k tmpfs disk 2> /dev/null; then
+  echo "SKIPPED: cannot mount a tmpfs here, no full-disk case"
+else
+  trap 'umount "$work/disk"' EXIT
+  [ -f slider/events.csv ] ||
+    { make_slider_prm slider; "$exe" slider.prm > slider.log 2>&1; }
+  make_slider_prm disk-run disk/run
+  "$exe" disk-run.prm > disk-run.out 2> disk-run.err
+  status=$?
+  if [ $status -eq 1 ] &&
+     one_line_error disk-run.err ": No space left on device" &&
+     grep -q "^rsfcycle: error: disk/run/" disk-run.err &&
+     [ -f disk/run/checkpoint.bin ]; then
+    pass
+  else
+    fail "full disk (exit $status)"; cat disk-run.err
+  fi
+  echo "disk: $(cat disk-run.err)"
+  if mount -o remount,size=1m disk &&
+     "$exe" --resume disk/run > disk-run-2.out 2>&1 &&
+     cmp -s slider/events.csv disk/run/events.csv &&
+     cmp -s slider/time-series.csv disk/run/time-series.csv; then
+    pass; echo "disk: space freed, resumed: same events.csv"
+  else
+    fail "resume after the full disk"
   fi
 fi
 

@@ -3,6 +3,8 @@
 // parameter file, build the scene, run the generic solver.
 
 #include <cctype>
+#include <cerrno>
+#include <csignal>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -11,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/registry.h>
 #include <streambuf>
@@ -18,13 +21,22 @@
 
 namespace
 {
-  /** A stream buffer that writes to two others: the screen and log.txt. */
-  class TeeBuffer : public std::streambuf
+  /**
+   * The buffer of the log stream: every character goes to the screen and
+   * to log.txt in the run folder. log.txt is opened at the first character
+   * (appended to on resume), so that a run refused before its first log
+   * line, such as a resume from a damaged checkpoint, leaves the folder as
+   * it was. A failed write to log.txt throws "log.txt: reason" (the stream
+   * passes it on with exceptions(badbit)); the screen's failures are
+   * ignored, log.txt being the record.
+   */
+  class LogBuffer : public std::streambuf
   {
   public:
-    TeeBuffer(std::streambuf *first, std::streambuf *second)
-      : first(first)
-      , second(second)
+    LogBuffer(std::streambuf *screen, const std::string &path, bool append)
+      : screen(screen)
+      , path(path)
+      , mode(std::ios::out | (append ? std::ios::app : std::ios::trunc))
     {}
 
   protected:
@@ -33,18 +45,27 @@ namespace
     {
       if (c == EOF)
         return !EOF;
-      const int r1 = first->sputc(c), r2 = second->sputc(c);
-      return (r1 == EOF || r2 == EOF) ? EOF : c;
+      screen->sputc(c);
+      if (!file.is_open() && !file.open(path, mode))
+        throw rsfcycle::output::file_error(path, errno);
+      if (file.sputc(c) == EOF)
+        throw rsfcycle::output::file_error(path, errno);
+      return c;
     }
     int
     sync() override
     {
-      const int r1 = first->pubsync(), r2 = second->pubsync();
-      return (r1 == 0 && r2 == 0) ? 0 : -1;
+      screen->pubsync();
+      if (file.is_open() && file.pubsync() != 0)
+        throw rsfcycle::output::file_error(path, errno);
+      return 0;
     }
 
   private:
-    std::streambuf *first, *second;
+    std::streambuf          *screen;
+    const std::string        path;
+    const std::ios::openmode mode;
+    std::filebuf             file;
   };
 
   void
@@ -147,11 +168,14 @@ namespace
     if (!resume)
       prepare_output_directory(parameters.run.output_directory,
                                parameters.run.overwrite_output);
-    std::ofstream log_file(parameters.run.output_directory + "/log.txt",
-                           resume ? std::ios::app : std::ios::out);
-    TeeBuffer     tee(std::cout.rdbuf(), log_file.rdbuf());
-    std::ostream  log(&tee);
-    return simulation->run(prm, log, resume);
+    LogBuffer    buffer(std::cout.rdbuf(),
+                     parameters.run.output_directory + "/log.txt",
+                     resume);
+    std::ostream log(&buffer);
+    log.exceptions(std::ios::badbit);
+    const bool completed = simulation->run(prm, log, resume);
+    log.flush();
+    return completed;
   }
 } // namespace
 
@@ -165,6 +189,9 @@ main(int argc, char **argv)
   // --help, --print-parameters, bad input and the spring-slider need not
   // pay.
   std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+  // A file over the size limit (ulimit -f) is then a failed write (EFBIG),
+  // reported with the file's name, instead of a kill by SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
   try
     {
       dealii::ParameterHandler prm;

@@ -1,7 +1,7 @@
+#include <rsfcycle/format.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/registry.h>
 #include <rsfcycle/solvers/tnnmg.h>
-#include <sstream>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -347,38 +347,27 @@ namespace rsfcycle
   }
 
 
-  namespace
-  {
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
-
-
   void
   Parameters::validate() const
   {
     const auto &ts = time_stepping;
     if (!(ts.minimum_step <= ts.initial_step))
       throw std::invalid_argument(
-        "Time stepping/Minimum step = " + str(ts.minimum_step) +
-        ": must not exceed Initial step = " + str(ts.initial_step));
+        "Time stepping/Minimum step = " + format_number(ts.minimum_step) +
+        ": must not exceed Initial step = " + format_number(ts.initial_step));
     if (!(ts.initial_step <= ts.maximum_step))
       throw std::invalid_argument(
-        "Time stepping/Initial step = " + str(ts.initial_step) +
-        ": must not exceed Maximum step = " + str(ts.maximum_step));
+        "Time stepping/Initial step = " + format_number(ts.initial_step) +
+        ": must not exceed Maximum step = " + format_number(ts.maximum_step));
     if (mesh.global_refinements + mesh.local_refinements > 16)
       throw std::invalid_argument(
         "Mesh/Global refinements + Local refinements = " +
         std::to_string(mesh.global_refinements + mesh.local_refinements) +
         ": at most 16 levels are allowed");
     if (!(output.event_output_interval <= output.output_interval))
-      throw std::invalid_argument(
-        "Output/Event output interval = " + str(output.event_output_interval) +
-        ": must not exceed Output interval = " + str(output.output_interval));
+      throw std::invalid_argument("Output/Event output interval = " +
+                                  format_number(output.event_output_interval) +
+                                  ": must not exceed Output interval = " +
+                                  format_number(output.output_interval));
   }
 } // namespace rsfcycle

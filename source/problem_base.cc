@@ -2,9 +2,10 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
-#include <fstream>
 #include <map>
+#include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/solvers/amg_correction.h>
 #include <rsfcycle/solvers/multigrid_correction.h>
@@ -57,8 +58,7 @@ namespace rsfcycle
     make_multigrid(const physics::Discretisation<dim>     &discretisation,
                    const friction::ContactQuadrature<dim> &contact,
                    const SolverParameters                 &solver,
-                   const solvers::LinearCorrectionControl &control,
-                   std::ostream                           &log)
+                   const solvers::LinearCorrectionControl &control)
     {
       using MG = solvers::MultigridCorrection<dim>;
       std::vector<typename MG::DirichletBoundary> dirichlet = {
@@ -125,11 +125,6 @@ namespace rsfcycle
                                      level_cell_matrices,
                                      coefficients,
                                      settings);
-      log << "Multigrid: " << mg->level_sizes().size()
-          << " levels, dofs per level:";
-      for (const auto n : mg->level_sizes())
-        log << ' ' << n;
-      log << std::endl;
       return mg;
     }
   } // namespace
@@ -151,7 +146,7 @@ namespace rsfcycle
         control, discretisation.dof_components());
     else if (solver.linear_correction == "multigrid")
       linear_correction =
-        make_multigrid(discretisation, contact, solver, control, log);
+        make_multigrid(discretisation, contact, solver, control);
     else
       throw std::invalid_argument(
         "Solver/Linear correction = " + solver.linear_correction +
@@ -175,19 +170,14 @@ namespace rsfcycle
   void
   ProblemBase<dim>::compute_initial_state()
   {
-    const auto [u, reaction]     = discretisation.gravity_equilibrium();
-    const unsigned int n_tensile = contact.set_normal_forces(reaction);
+    const auto [u, reaction] = discretisation.gravity_equilibrium();
+    n_tensile_nodes          = contact.set_normal_forces(reaction);
     for (const auto &node : contact.nodes())
       if (!std::isfinite(node.normal_force))
         throw std::runtime_error(
           "non-finite normal stress from the gravity equilibrium at the base "
           "node at s = " +
-          std::to_string(scene.along_base_coordinate(node.position)) + " m");
-    if (n_tensile > 0)
-      log << "Warning: " << n_tensile
-          << " contact nodes carry a tensile normal reaction in the gravity "
-             "equilibrium; their magnitude is used."
-          << std::endl;
+          format_number(scene.along_base_coordinate(node.position)) + " m");
 
     const auto n_dofs = discretisation.dof_handler.n_dofs();
     initial.u         = u;
@@ -367,10 +357,11 @@ namespace rsfcycle
 
 
   template <int dim>
-  std::size_t
-  ProblemBase<dim>::n_unknowns() const
+  output::CheckpointIdentity
+  ProblemBase<dim>::checkpoint_identity() const
   {
-    return discretisation.dof_handler.n_dofs();
+    // serial: one rank
+    return {parameters.run.scene, dim, discretisation.dof_handler.n_dofs(), 1};
   }
 
 
@@ -407,10 +398,9 @@ namespace rsfcycle
   }
 
 
-  /** The mesh and solver lines of the log (read by the test digests). */
   template <int dim>
   void
-  ProblemBase<dim>::print_setup() const
+  ProblemBase<dim>::describe(std::ostream &log) const
   {
     const auto &tria = discretisation.triangulation;
     log << "Scene: " << parameters.run.scene << " (" << dim << "D)\n"
@@ -429,6 +419,21 @@ namespace rsfcycle
         << parameters.solver.linear_correction << " linear correction, "
         << parameters.solver.state_law << " law, " << parameters.solver.dynamics
         << std::endl;
+    if (const auto *mg =
+          dynamic_cast<const solvers::MultigridCorrection<dim> *>(
+            linear_correction.get()))
+      {
+        log << "Multigrid: " << mg->level_sizes().size()
+            << " levels, dofs per level:";
+        for (const auto n : mg->level_sizes())
+          log << ' ' << n;
+        log << std::endl;
+      }
+    if (n_tensile_nodes > 0)
+      log << "Warning: " << n_tensile_nodes
+          << " contact nodes carry a tensile normal reaction in the gravity "
+             "equilibrium; their magnitude is used."
+          << std::endl;
   }
 
 
@@ -436,16 +441,15 @@ namespace rsfcycle
   bool
   ProblemBase<dim>::run(const ParameterHandler &prm, const bool resume)
   {
-    const std::string dir = parameters.run.output_directory;
-    std::filesystem::create_directories(dir + "/solution");
-    std::filesystem::create_directories(dir + "/fault");
     if (!resume)
       {
-        std::ofstream out(dir + "/parameters.prm");
-        prm.print_parameters(out, ParameterHandler::PRM);
+        const std::string dir = parameters.run.output_directory;
+        std::filesystem::create_directories(dir);
+        std::ostringstream text;
+        prm.print_parameters(text, ParameterHandler::PRM);
+        output::write_file(dir + "/parameters.prm", text.str());
       }
     setup();
-    print_setup();
 
     controller = time::make_controller<BodyState>(
       parameters.time_stepping,

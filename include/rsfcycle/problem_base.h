@@ -126,8 +126,11 @@ namespace rsfcycle
     take_work() override;
     std::string
     last_failure() const override;
-    std::size_t
-    n_unknowns() const override;
+    output::CheckpointIdentity
+    checkpoint_identity() const override;
+    /** The scene, mesh and solver lines of the log (read by test digests). */
+    void
+    describe(std::ostream &log) const override;
     bool
     writes_snapshots() const override
     {
@@ -152,8 +155,6 @@ namespace rsfcycle
     setup_observation_points();
     void
     compute_initial_state();
-    void
-    print_setup() const;
 
     const Parameters         &parameters;
     const scenes::Scene<dim> &scene;
@@ -170,6 +171,8 @@ namespace rsfcycle
     std::unique_ptr<time::RunLoop<BodyState>>    time_loop;
 
     BodyState initial;
+    /** Contact nodes with a tensile reaction in the gravity equilibrium. */
+    unsigned int n_tensile_nodes = 0;
 
     /** Observation points: dof indices and weights of u . vertical. */
     std::vector<std::vector<std::pair<types::global_dof_index, double>>>

@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/output/recorder.h>
 #include <stdexcept>
 
@@ -25,30 +27,49 @@ namespace rsfcycle
         return !z.empty() && z[i] < z[j];
       });
 
-      const std::string files[3] = {dir + "/time-series.csv",
-                                    dir + "/base-profile.csv",
-                                    dir + "/events.csv"};
+      paths                         = {{dir + "/time-series.csv",
+                                        dir + "/base-profile.csv",
+                                        dir + "/events.csv"}};
+      std::ofstream *const files[3] = {&series, &profile, &catalogue};
       if (resume)
         {
-          // drop what was written after the checkpoint, then append
-          std::filesystem::resize_file(files[0], sizes.series);
-          std::filesystem::resize_file(files[1], sizes.profile);
-          std::filesystem::resize_file(files[2], sizes.catalogue);
-          series.open(files[0], std::ios::app);
-          profile.open(files[1], std::ios::app);
-          catalogue.open(files[2], std::ios::app);
-        }
-      else
-        {
-          series.open(files[0]);
-          profile.open(files[1]);
-          catalogue.open(files[2]);
+          // drop what was written after the checkpoint, then append; first
+          // check all three, so that a refusal changes nothing
+          const long long kept[3] = {sizes.series,
+                                     sizes.profile,
+                                     sizes.catalogue};
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              std::error_code error;
+              const auto size = std::filesystem::file_size(paths[i], error);
+              if (error)
+                throw std::invalid_argument(paths[i] + ": " + error.message());
+              if (size < static_cast<std::uintmax_t>(kept[i]))
+                throw std::invalid_argument(
+                  paths[i] + ": " + std::to_string(size) +
+                  " bytes, shorter than the " + std::to_string(kept[i]) +
+                  " bytes the checkpoint recorded: the file was cut after "
+                  "the checkpoint was written");
+            }
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              std::error_code error;
+              std::filesystem::resize_file(paths[i], kept[i], error);
+              if (error)
+                throw std::runtime_error(paths[i] + ": " + error.message());
+            }
         }
       for (unsigned int i = 0; i < 3; ++i)
-        if (!(i == 0 ? series : i == 1 ? profile : catalogue))
-          throw std::runtime_error("cannot open " + files[i] + " for writing");
+        {
+          files[i]->open(paths[i], resume ? std::ios::app : std::ios::out);
+          if (!*files[i])
+            throw file_error(paths[i], errno);
+        }
       if (!resume)
-        write_headers(layout);
+        {
+          write_headers(layout);
+          flush();
+        }
     }
 
 
@@ -102,6 +123,7 @@ namespace rsfcycle
       // controller's comparisons and rejected attempts included
       series_row << work.tnnmg_iterations << work.linear_iterations;
       series_row.write_line(series);
+      check();
     }
 
 
@@ -112,6 +134,7 @@ namespace rsfcycle
       for (const unsigned int k : order)
         profile_row << rates[k];
       profile_row.write_line(profile);
+      check();
     }
 
 
@@ -120,6 +143,7 @@ namespace rsfcycle
     {
       EventDetector::write_csv_row(catalogue, index, event);
       catalogue.flush();
+      check();
     }
 
 
@@ -129,18 +153,33 @@ namespace rsfcycle
       series.flush();
       profile.flush();
       catalogue.flush();
+      check();
     }
 
 
     FileSizes
-    Recorder::sizes()
+    Recorder::sync()
     {
       flush();
+      for (const auto &path : paths)
+        sync_to_disk(path);
       FileSizes sizes;
       sizes.series    = series.tellp();
       sizes.profile   = profile.tellp();
       sizes.catalogue = catalogue.tellp();
       return sizes;
+    }
+
+
+    void
+    Recorder::check() const
+    {
+      // after a failed write, errno still holds its reason: the streams
+      // make no system call after it
+      const std::ofstream *const files[3] = {&series, &profile, &catalogue};
+      for (unsigned int i = 0; i < 3; ++i)
+        if (!*files[i])
+          throw file_error(paths[i], errno);
     }
   } // namespace output
 } // namespace rsfcycle

@@ -2,9 +2,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_out_faces.h>
-#include <fstream>
+#include <filesystem>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/output/snapshots.h>
+#include <sstream>
 
 namespace rsfcycle
 {
@@ -135,6 +137,20 @@ namespace rsfcycle
 
 
     template <int dim>
+    std::string
+    SnapshotWriter<dim>::in_folder(const std::string &name) const
+    {
+      const std::filesystem::path path = dir + "/" + name;
+      std::error_code             error;
+      std::filesystem::create_directories(path.parent_path(), error);
+      if (error)
+        throw std::runtime_error(path.parent_path().string() + ": " +
+                                 error.message());
+      return path.string();
+    }
+
+
+    template <int dim>
     void
     SnapshotWriter<dim>::write(const BodyState &state, const double t)
     {
@@ -177,12 +193,18 @@ namespace rsfcycle
       flags.cycle = n_snapshots;
       data_out.set_flags(flags);
       const std::string number = Utilities::int_to_string(n_snapshots, 5);
-      const std::string name   = "solution-" + number + ".vtu";
-      std::ofstream     vtu(dir + "/solution/" + name);
-      data_out.write_vtu(vtu);
-      records.emplace_back(t, "solution/" + name);
-      std::ofstream pvd(dir + "/solution.pvd");
-      DataOutBase::write_pvd_record(pvd, records);
+      const std::string name   = "solution/solution-" + number + ".vtu";
+      {
+        std::ostringstream vtu;
+        data_out.write_vtu(vtu);
+        write_file(in_folder(name), vtu.str());
+      }
+      records.emplace_back(t, name);
+      {
+        std::ostringstream pvd;
+        DataOutBase::write_pvd_record(pvd, records);
+        replace_file(dir + "/solution.pvd", pvd.str());
+      }
 
       // The fault (contact faces) at the same times: fault/fault-NNNNN.vtu,
       // fault.pvd (the paper's figure 9 draws isolines of V - v0 on it).
@@ -196,15 +218,22 @@ namespace rsfcycle
       fault.add_data_vector(field[mu], "friction_coefficient");
       fault.build_patches();
       fault.set_flags(flags);
-      std::ofstream fault_vtu(dir + "/fault/fault-" + number + ".vtu");
-      fault.write_vtu(fault_vtu);
+      {
+        std::ostringstream fault_vtu;
+        fault.write_vtu(fault_vtu);
+        write_file(in_folder("fault/fault-" + number + ".vtu"),
+                   fault_vtu.str());
+      }
       std::vector<std::pair<double, std::string>> fault_records;
       for (unsigned int i = 0; i < records.size(); ++i)
         fault_records.emplace_back(records[i].first,
                                    "fault/fault-" +
                                      Utilities::int_to_string(i, 5) + ".vtu");
-      std::ofstream fault_pvd(dir + "/fault.pvd");
-      DataOutBase::write_pvd_record(fault_pvd, fault_records);
+      {
+        std::ostringstream fault_pvd;
+        DataOutBase::write_pvd_record(fault_pvd, fault_records);
+        replace_file(dir + "/fault.pvd", fault_pvd.str());
+      }
       ++n_snapshots;
     }
 

@@ -1,11 +1,12 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/scenes/spring_slider.h>
 #include <rsfcycle/time/make_controller.h>
 #include <rsfcycle/time/run_loop.templates.h>
+#include <sstream>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -288,31 +289,44 @@ namespace rsfcycle
     }
 
 
-    SpringSlider::Summary
-    SpringSlider::run(const ParameterHandler &prm,
-                      std::ostream           &log,
-                      const bool              resume)
+    void
+    SpringSlider::describe(std::ostream &log) const
     {
-      const std::string dir = parameters.run.output_directory;
-      std::filesystem::create_directories(dir);
-      if (!resume)
-        {
-          std::ofstream out(dir + "/parameters.prm");
-          prm.print_parameters(out, ParameterHandler::PRM);
-        }
       log << "Scene: spring-slider ("
           << (mass > 0 ? "dynamic" : "quasi-dynamic") << "), integrator "
           << integrator << "\n"
           << "Stiffness k / k_crit = " << stiffness / critical_stiffness()
           << " (k_crit = (b - a) |sigma_n| / L = " << critical_stiffness()
           << " Pa/m)\n";
-      if (integrator != "arkode")
+      if (integrator == "arkode")
+        log << "ARKODE reference: relative tolerance "
+            << parameters.time_stepping.tolerance << ", "
+            << (mass > 0 ? "variables (slip, V, alpha)" :
+                           "variables (slip, log V, alpha)")
+            << std::endl;
+      else
         log << "Solver: " << parameters.solver.coupling << " coupling, "
             << parameters.solver.state_law << " law" << std::endl;
+    }
+
+
+    SpringSlider::Summary
+    SpringSlider::run(const ParameterHandler &prm,
+                      std::ostream           &log,
+                      const bool              resume)
+    {
+      if (!resume)
+        {
+          const std::string dir = parameters.run.output_directory;
+          std::filesystem::create_directories(dir);
+          std::ostringstream text;
+          prm.print_parameters(text, ParameterHandler::PRM);
+          output::write_file(dir + "/parameters.prm", text.str());
+        }
 
       std::unique_ptr<time::Controller<State>> controller;
       if (integrator == "arkode")
-        controller = make_arkode_reference(*this, log);
+        controller = make_arkode_reference(*this);
       else
         controller = time::make_controller<State>(
           parameters.time_stepping,

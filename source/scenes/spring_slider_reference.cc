@@ -53,7 +53,7 @@ namespace rsfcycle
       using State      = SpringSlider::State;
       using VectorType = dealii::Vector<double>;
 
-      ArkodeReference(const SpringSlider &slider, std::ostream &log);
+      explicit ArkodeReference(const SpringSlider &slider);
 
       void
       advance(State &current, double &t, double end_time) override;
@@ -111,8 +111,7 @@ namespace rsfcycle
     };
 
 
-    ArkodeReference::ArkodeReference(const SpringSlider &slider,
-                                     std::ostream       &log)
+    ArkodeReference::ArkodeReference(const SpringSlider &slider)
       : slider(slider)
       , dynamic(slider.mass > 0)
       , y(3)
@@ -123,10 +122,6 @@ namespace rsfcycle
           "Spring slider: the ARKODE reference requires Cohesion = 0");
       const double end_time = slider.parameters.run.end_time;
       const double rtol     = slider.parameters.time_stepping.tolerance;
-      log << "ARKODE reference: relative tolerance " << rtol << ", "
-          << (dynamic ? "variables (slip, V, alpha)" :
-                        "variables (slip, log V, alpha)")
-          << std::endl;
 
       using ARKode = dealii::SUNDIALS::ARKode<VectorType>;
       typename ARKode::AdditionalData data(0.0,
@@ -258,9 +253,9 @@ namespace rsfcycle
 
 
     std::unique_ptr<time::Controller<SpringSlider::State>>
-    make_arkode_reference(const SpringSlider &slider, std::ostream &log)
+    make_arkode_reference(const SpringSlider &slider)
     {
-      return std::make_unique<ArkodeReference>(slider, log);
+      return std::make_unique<ArkodeReference>(slider);
     }
   } // namespace scenes
 } // namespace rsfcycle

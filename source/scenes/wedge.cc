@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
+#include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/scenes/wedge.h>
 
@@ -179,8 +180,8 @@ namespace rsfcycle
 
       if (patch_downdip_x > length)
         throw std::invalid_argument(
-          "Wedge/Patch down-dip end = " + std::to_string(patch_downdip_x) +
-          ": must lie in [0, Length = " + std::to_string(length) + "]");
+          "Wedge/Patch down-dip end = " + format_number(patch_downdip_x) +
+          ": must lie in [0, Length = " + format_number(length) + "]");
       const double s_down = patch_downdip_x / cos_phi;
       const double longest =
         (dim == 2) ? patch_length : std::max(patch_length_0, patch_length_1);
@@ -188,12 +189,12 @@ namespace rsfcycle
         throw std::invalid_argument(
           "Wedge/Patch length: the patch must lie on the base (along-base "
           "extent [0, " +
-          std::to_string(hyp) + "] m)");
+          format_number(hyp) + "] m)");
       for (const double x : observation_x)
         if (x > length)
           throw std::invalid_argument(
-            "Wedge/Observation points: " + std::to_string(x) +
-            " lies beyond Length = " + std::to_string(length));
+            "Wedge/Observation points: " + format_number(x) +
+            " lies beyond Length = " + format_number(length));
       if (lower_thickness >= depth)
         throw std::invalid_argument(
           "Wedge/Lower region thickness must be below Depth");

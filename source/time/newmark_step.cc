@@ -1,4 +1,5 @@
 #include <cmath>
+#include <rsfcycle/format.h>
 #include <rsfcycle/time/newmark_step.h>
 #include <rsfcycle/time/rate_state_coupling.h>
 #include <sstream>
@@ -266,7 +267,7 @@ namespace rsfcycle
       if (!std::isfinite(next.u.l2_norm()) ||
           !std::isfinite(next.v.l2_norm()) || !std::isfinite(next.a.l2_norm()))
         {
-          failure = "t = " + std::to_string(t + tau) +
+          failure = "t = " + format_number(t + tau) +
                     " s: non-finite displacement, velocity or "
                     "acceleration; " +
                     first_non_finite(next.v);
@@ -275,9 +276,9 @@ namespace rsfcycle
       for (unsigned int k = 0; k < n_nodes; ++k)
         if (!std::isfinite(next.alpha[k]))
           {
-            failure = "t = " + std::to_string(t + tau) +
+            failure = "t = " + format_number(t + tau) +
                       " s: non-finite friction state at the base node at s = " +
-                      std::to_string(along_base(contact.nodes()[k].position)) +
+                      format_number(along_base(contact.nodes()[k].position)) +
                       " m";
             return false;
           }
@@ -304,7 +305,7 @@ namespace rsfcycle
         for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
           if (!std::isfinite(v[nodes[k].dofs[l]]))
             return "non-finite slip rate at the base node at s = " +
-                   std::to_string(along_base(contact.nodes()[k].position)) +
+                   format_number(along_base(contact.nodes()[k].position)) +
                    " m";
       for (types::global_dof_index i = 0; i < v.size(); ++i)
         if (!std::isfinite(v[i]))

@@ -1,6 +1,7 @@
 #ifndef rsfcycle_output_recorder_h
 #define rsfcycle_output_recorder_h
 
+#include <array>
 #include <fstream>
 #include <rsfcycle/output/csv_row.h>
 #include <rsfcycle/output/events.h>
@@ -41,7 +42,10 @@ namespace rsfcycle
     public:
       /**
        * Create the files with their headers in dir or, with `resume`, cut
-       * them to the sizes of the checkpoint and append.
+       * them to the sizes of the checkpoint and append. A file shorter than
+       * the checkpoint says (cut after the checkpoint was written) is an
+       * std::invalid_argument, thrown before any file is changed. Every
+       * failure to open or write a file is a std::runtime_error naming it.
        */
       Recorder(const std::string  &dir,
                const time::Layout &layout,
@@ -64,21 +68,30 @@ namespace rsfcycle
       void
       write_event(unsigned int index, const Event &event);
 
-      /** Flush the files to disk (progress, checkpoints). */
+      /** Flush the files (progress reports). */
       void
       flush();
 
-      /** The current sizes (for a checkpoint); flushes first. */
+      /**
+       * Flush the files and sync them to the disk (before a checkpoint):
+       * their sizes, which the checkpoint records, are then on the disk
+       * too. Returns the sizes.
+       */
       FileSizes
-      sizes();
+      sync();
 
     private:
       void
       write_headers(const time::Layout &layout);
 
-      std::ofstream             series, profile, catalogue;
-      CsvRow                    series_row{10}, profile_row{8};
-      std::vector<unsigned int> order; // node order along the base
+      /** Throw if a file failed (after a write). */
+      void
+      check() const;
+
+      std::array<std::string, 3> paths; // of series, profile, catalogue
+      std::ofstream              series, profile, catalogue;
+      CsvRow                     series_row{10}, profile_row{8};
+      std::vector<unsigned int>  order; // node order along the base
     };
   } // namespace output
 } // namespace rsfcycle

@@ -47,6 +47,13 @@ namespace rsfcycle
       }
 
     private:
+      /**
+       * The path of `name` (e.g. "solution/solution-00000.vtu") in the run
+       * folder, whose subfolder is created if it is missing.
+       */
+      std::string
+      in_folder(const std::string &name) const;
+
       /** The friction fields on the base as scalar FE vectors. */
       std::vector<Vector<double>>
       base_fields(const BodyState &state) const;

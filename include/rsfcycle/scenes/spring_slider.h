@@ -115,11 +115,16 @@ namespace rsfcycle
       time::Sample
       sample(const State &state) const override;
 
-      std::size_t
-      n_unknowns() const override
+      /** No mesh (dimension 0), one node: the state size is 1. */
+      output::CheckpointIdentity
+      checkpoint_identity() const override
       {
-        return 1;
+        return {"spring-slider", 0, 1, 1};
       }
+
+      /** Scene, stiffness, solver (or the ARKODE reference). */
+      void
+      describe(std::ostream &log) const override;
 
       /**
        * One Newmark step (15) of length tau from the state at time t, with
@@ -188,7 +193,7 @@ namespace rsfcycle
      * internal steps.
      */
     std::unique_ptr<time::Controller<SpringSliderState>>
-    make_arkode_reference(const SpringSlider &slider, std::ostream &log);
+    make_arkode_reference(const SpringSlider &slider);
   } // namespace scenes
 } // namespace rsfcycle
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <rsfcycle/format.h>
 #include <rsfcycle/time/controller.h>
 #include <string>
 #include <vector>
@@ -100,9 +101,8 @@ namespace rsfcycle
               }
             if (dt / 2 < min_step)
               throw StepSizeUnderflow(
-                "step size " + std::to_string(dt / 2) +
-                " s below the minimum " + std::to_string(min_step) +
-                " s: the spatial problem " +
+                "step size " + format_number(dt / 2) + " s below the minimum " +
+                format_number(min_step) + " s: the spatial problem " +
                 (failed ? "failed to converge" :
                           "is not resolved to the tolerance"));
             tau = dt / 2;

@@ -5,6 +5,8 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <cstddef>
+#include <ostream>
+#include <rsfcycle/output/checkpoint.h>
 #include <string>
 #include <vector>
 
@@ -103,11 +105,21 @@ namespace rsfcycle
       }
 
       /**
-       * The number of unknowns: a checkpoint of another discretisation is
-       * refused on resume.
+       * The scene, mesh dimension, number of unknowns and MPI ranks written
+       * into the header of a checkpoint: a checkpoint of another
+       * discretisation is refused on resume.
        */
-      virtual std::size_t
-      n_unknowns() const = 0;
+      virtual output::CheckpointIdentity
+      checkpoint_identity() const = 0;
+
+      /**
+       * The lines of the log that describe the model (scene, mesh, solver).
+       * The run loop prints them when the run starts: on resume, after the
+       * checkpoint has been accepted, so that a refused resume leaves
+       * log.txt as it was.
+       */
+      virtual void
+      describe(std::ostream &log) const = 0;
 
       /** Whether the model writes snapshots (VTU) at all. */
       virtual bool

@@ -9,9 +9,9 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
-#include <fstream>
 #include <iomanip>
 #include <rsfcycle/output/checkpoint.h>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/time/run_loop.h>
 #include <sstream>
 
@@ -70,13 +70,14 @@ namespace rsfcycle
         return;
       dealii::TimerOutput::Scope scope(timer, "Checkpoint");
       LoopState                 &s = *loop_state;
-      s.file_sizes                 = recorder->sizes();
+      s.file_sizes                 = recorder->sync();
       s.controller                 = controller.memory();
-      output::write_checkpoint(dir, [&](boost::archive::binary_oarchive &ar) {
-        const std::size_t n_unknowns = model.n_unknowns();
-        ar << n_unknowns << s;
-        model.save_output(ar);
-      });
+      output::write_checkpoint(dir,
+                               model.checkpoint_identity(),
+                               [&](boost::archive::binary_oarchive &ar) {
+                                 ar << s;
+                                 model.save_output(ar);
+                               });
       s.controller = ControllerMemory<State>();
     }
 
@@ -89,17 +90,12 @@ namespace rsfcycle
         throw std::invalid_argument(
           "--resume " + dir +
           ": this integrator writes no checkpoints; start the run anew");
-      output::read_checkpoint(dir, [&](boost::archive::binary_iarchive &ar) {
-        std::size_t n_unknowns;
-        ar >> n_unknowns;
-        if (n_unknowns != model.n_unknowns())
-          throw std::invalid_argument(
-            "--resume " + dir +
-            ": the checkpoint belongs to a different mesh (parameters "
-            "changed?)");
-        ar >> *loop_state;
-        model.load_output(ar);
-      });
+      output::read_checkpoint(dir,
+                              model.checkpoint_identity(),
+                              [&](boost::archive::binary_iarchive &ar) {
+                                ar >> *loop_state;
+                                model.load_output(ar);
+                              });
     }
 
 
@@ -115,16 +111,19 @@ namespace rsfcycle
                               layout.interpolate_event_times));
       LoopState &s = *loop_state;
       s.state      = model.initial_state();
+      // On resume, everything that can refuse the run folder (checkpoint,
+      // record files) is checked before the first byte is written to it.
       if (resume)
-        {
-          read_checkpoint();
-          log << "Resumed from the checkpoint at t = " << s.t << " s, step "
-              << s.step << std::endl;
-        }
+        read_checkpoint();
       recorder =
         std::make_unique<output::Recorder>(dir, layout, resume, s.file_sizes);
+      model.describe(log);
       if (resume)
-        controller.restore(s.controller);
+        {
+          log << "Resumed from the checkpoint at t = " << s.t << " s, step "
+              << s.step << std::endl;
+          controller.restore(s.controller);
+        }
       s.controller = ControllerMemory<State>();
       if (!resume)
         {
@@ -389,12 +388,14 @@ namespace rsfcycle
                              parameters.output.transition_time,
                              parameters.output.transition_events);
       log << events.str();
-      std::ofstream(dir + "/summary.txt")
-        << "Steps: " << s.step << "\nSpatial problems: " << s.total_problems
-        << "\nStep size: " << s.min_dt << " s to " << s.max_dt
-        << " s\nMax fixed-point iterations per step: " << s.max_fixed_point
-        << "\n"
-        << events.str();
+      std::ostringstream summary;
+      summary << "Steps: " << s.step
+              << "\nSpatial problems: " << s.total_problems
+              << "\nStep size: " << s.min_dt << " s to " << s.max_dt
+              << " s\nMax fixed-point iterations per step: "
+              << s.max_fixed_point << "\n"
+              << events.str();
+      output::write_file(dir + "/summary.txt", summary.str());
       timer.print_summary();
     }
   } // namespace time

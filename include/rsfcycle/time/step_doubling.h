@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <functional>
 #include <optional>
+#include <rsfcycle/format.h>
 #include <rsfcycle/time/controller.h>
 #include <string>
 
@@ -98,8 +99,8 @@ namespace rsfcycle
                 break;
               if (tau / 2 < min_step)
                 throw StepSizeUnderflow(
-                  "step size " + std::to_string(tau / 2) +
-                  " s below the minimum " + std::to_string(min_step) +
+                  "step size " + format_number(tau / 2) +
+                  " s below the minimum " + format_number(min_step) +
                   " s: the spatial problem " +
                   (half && twice ? "is not resolved to the tolerance" :
                                    "failed to converge"));

@@ -1,0 +1,48 @@
+#ifndef rsfcycle_output_files_h
+#define rsfcycle_output_files_h
+
+#include <stdexcept>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    /**
+     * The error of a failed read or write: "path: reason", the reason being
+     * std::strerror(error) ("No space left on device", "File too large").
+     * main() prints it as one line.
+     */
+    std::runtime_error
+    file_error(const std::string &path, int error);
+
+    /**
+     * Write `content` to the file `path` (created or truncated) with POSIX
+     * calls, so that every failure is seen with its errno; with `durable`,
+     * fsync the file before closing it, so that its data are on the disk
+     * when the function returns. A failure removes the partial file and
+     * throws file_error.
+     */
+    void
+    write_file(const std::string &path,
+               const std::string &content,
+               bool               durable = false);
+
+    /**
+     * Replace the file `path` by `content` as a whole: written to
+     * path + ".tmp" and renamed, so that a failed write leaves the old file
+     * as it was.
+     */
+    void
+    replace_file(const std::string &path, const std::string &content);
+
+    /**
+     * fsync the file or folder `path`: for a file, its data reach the disk;
+     * for a folder, the names created or renamed in it do.
+     */
+    void
+    sync_to_disk(const std::string &path);
+  } // namespace output
+} // namespace rsfcycle
+
+#endif

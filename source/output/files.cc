@@ -1,0 +1,83 @@
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <rsfcycle/output/files.h>
+#include <unistd.h>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    std::runtime_error
+    file_error(const std::string &path, const int error)
+    {
+      return std::runtime_error(
+        path + ": " + (error != 0 ? std::strerror(error) : "write failed"));
+    }
+
+
+    void
+    write_file(const std::string &path,
+               const std::string &content,
+               const bool         durable)
+    {
+      const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (fd < 0)
+        throw file_error(path, errno);
+      const char *data   = content.data();
+      std::size_t remain = content.size();
+      int         error  = 0;
+      while (remain > 0 && error == 0)
+        {
+          const ssize_t n = ::write(fd, data, remain);
+          if (n > 0)
+            {
+              data += n;
+              remain -= n;
+            }
+          else if (n < 0 && errno != EINTR)
+            error = errno;
+        }
+      if (error == 0 && durable && ::fsync(fd) != 0)
+        error = errno;
+      // close() reports what a file system defers (NFS, quota)
+      if (::close(fd) != 0 && error == 0)
+        error = errno;
+      if (error != 0)
+        {
+          ::unlink(path.c_str());
+          throw file_error(path, error);
+        }
+    }
+
+
+    void
+    replace_file(const std::string &path, const std::string &content)
+    {
+      const std::string tmp = path + ".tmp";
+      write_file(tmp, content);
+      if (std::rename(tmp.c_str(), path.c_str()) != 0)
+        {
+          const int error = errno;
+          ::unlink(tmp.c_str());
+          throw file_error(path, error);
+        }
+    }
+
+
+    void
+    sync_to_disk(const std::string &path)
+    {
+      // O_RDONLY suffices: fsync acts on the file (or folder), not on the
+      // descriptor
+      const int fd = ::open(path.c_str(), O_RDONLY);
+      if (fd < 0)
+        throw file_error(path, errno);
+      const int error = (::fsync(fd) != 0) ? errno : 0;
+      ::close(fd);
+      if (error != 0)
+        throw file_error(path, error);
+    }
+  } // namespace output
+} // namespace rsfcycle

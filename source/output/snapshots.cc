@@ -191,6 +191,10 @@ namespace rsfcycle
       DataOutBase::VtkFlags flags;
       flags.time  = t;
       flags.cycle = n_snapshots;
+      // deal.II's default, zlib's best compression, made the snapshots
+      // a tenth of the paper run's wall time; best_speed writes files
+      // about 1.3x larger several times faster (ParaView reads both)
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
       const std::string number = Utilities::int_to_string(n_snapshots, 5);
       const std::string name   = "solution/solution-" + number + ".vtu";

@@ -1,0 +1,261 @@
+#!/usr/bin/python3
+"""Mesh convergence of the 2D wedge's event statistics.
+
+The 2D wedge (prm/wedge-2d.prm, Table 1) with 2 global and K local
+refinements toward the patch (the patch's cells halve with every K), the
+default controller (local extrapolation) at delta = epsilon = DELTA, the
+geometric multigrid correction with TNNMG tolerance epsilon / 10, run until
+EVENTS events have ended (`Stop after events`). Runs at delta / 10 at the
+levels TIGHT show whether the time-step tolerance limits.
+
+Per resolution, over the events after the transition (the first TRANSITION
+events dropped): mean recurrence time, peak slip rate, slip, rupture width,
+duration, uplift per event at 15/30/45 cm (the jump of the surface
+displacement from the event's start to its end), nucleation position; and
+the unknowns, the cells on the patch, the wall time. From the three finest
+resolutions: the observed order p = log2(|d1| / |d2|) of the last two
+changes d1, d2 and the Richardson limit q + d2 / (2^p - 1); every resolution
+is then given as its distance from that limit.
+
+Runs are kept in WORK/<name>/ and not repeated if their summary.txt exists
+(`--rerun` repeats them); results.csv and the table hold every finished run
+in WORK, so that the series can be extended run by run (`--levels 10`).
+
+Usage: benchmarks/convergence/run.py [BUILD_DIR] [--levels 4,5,6,7,8,9]
+           [--delta 1e-5] [--events 16] [--tight 6] [--jobs 2] [--work DIR]
+           [--rerun]
+       benchmarks/convergence/run.py --table | --plot
+"""
+import concurrent.futures
+import csv
+import math
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import common  # noqa: E402  (benchmarks/common.py)
+
+TRANSITION = 8
+QUANTITIES = [  # column, label, unit, scale
+    ("recurrence_s", "recurrence", "s", 1.0),
+    ("peak_slip_rate_m_per_s", "peak slip rate", "mm/s", 1e3),
+    ("slip_um", "slip", "µm", 1.0),
+    ("rupture_width_m", "rupture width", "m", 1.0),
+    ("duration_s", "duration", "s", 1.0),
+    ("uplift_15cm_um", "uplift 15 cm", "µm", 1.0),
+    ("uplift_30cm_um", "uplift 30 cm", "µm", 1.0),
+    ("uplift_45cm_um", "uplift 45 cm", "µm", 1.0),
+    ("nucleation_position_m", "nucleation", "m", 1.0),
+]
+
+
+def arg(name, default):
+    if name in sys.argv:
+        return sys.argv[sys.argv.index(name) + 1]
+    return default
+
+
+OPTS = ("--levels", "--delta", "--events", "--jobs", "--work", "--tight")
+BUILD = next((a for i, a in enumerate(sys.argv[1:], 1)
+              if not a.startswith("--") and sys.argv[i - 1] not in OPTS),
+             os.path.join(ROOT, "build"))
+EXE = os.path.join(BUILD, "rsfcycle")
+LEVELS = [int(k) for k in arg("--levels", "4,5,6,7,8,9").split(",")]
+DELTA = float(arg("--delta", "1e-5"))
+EVENTS = int(arg("--events", "16"))
+JOBS = int(arg("--jobs", "2"))
+TIGHT = [int(k) for k in arg("--tight", "6").split(",") if k]
+WORK = arg("--work", os.path.join(HERE, "work"))
+RESULTS = os.path.join(HERE, "results.csv")
+FIGURE = os.path.join(ROOT, "doc", "figures", "convergence-2d.png")
+
+
+def run_name(level, delta):
+    return f"2+{level}-delta{delta:g}"
+
+
+def make_prm(level, delta):
+    d = os.path.join(WORK, run_name(level, delta))
+    prm = d + ".prm"
+    with open(prm, "w") as f:
+        f.write(common.wedge_prm(ROOT, level, d, 1000, f"""
+set Stop after events = {EVENTS}
+subsection Time stepping
+  set Controller = local-extrapolation
+  set Tolerance  = {delta:g}
+end
+subsection Solver
+  set Fixed-point tolerance = {delta:g}
+  set Linear correction     = multigrid
+  set TNNMG tolerance       = {delta / 10:g}
+end
+"""))
+    return d, prm
+
+
+def run(level, delta):
+    d, prm = make_prm(level, delta)
+    if os.path.exists(os.path.join(d, "summary.txt")) and \
+            "--rerun" not in sys.argv:
+        return d
+    common.run(EXE, [prm], d + ".log")
+    return d
+
+
+def event_statistics(d):
+    """Means over the events after the transition, and the run's cost."""
+    events = list(csv.DictReader(open(os.path.join(d, "events.csv"))))
+    series = list(csv.DictReader(open(os.path.join(d, "time-series.csv"))))
+    times = [float(r["time_s"]) for r in series]
+
+    def at(t, column):  # the first row at or after t
+        lo, hi = 0, len(times) - 1
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if times[mid] < t:
+                lo = mid + 1
+            else:
+                hi = mid
+        return float(series[lo][column])
+
+    for e in events:
+        for cm in (15, 30, 45):
+            col = f"uplift_{cm}cm_m"
+            e[f"uplift_{cm}cm_um"] = 1e6 * (at(float(e["end_s"]), col) -
+                                            at(float(e["start_s"]), col))
+    after = events[TRANSITION:]
+    if len(after) < 3:
+        sys.exit(f"{d}: only {len(events)} events")
+    row = {"events": len(after)}
+    for column, _, _, scale in QUANTITIES:
+        values = [float(e[column]) for e in after if e[column] != ""]
+        row[column] = scale * sum(values) / len(values)
+    log = open(os.path.join(d, "log.txt")).read()
+    row["unknowns"] = int(re.search(r"(\d+) unknowns", log).group(1))
+    row["patch_cell_mm"] = 1e3 * float(
+        re.search(r"Cell diameters: (\S+) m", log).group(1))
+    row["wall_s"] = common.stepping_time(log)
+    row["steps"] = len(series)
+    return row
+
+
+def write_results(rows):
+    keys = ["run", "level", "delta"] + [c for c, *_ in QUANTITIES] + \
+        ["events", "unknowns", "patch_cell_mm", "steps", "wall_s"]
+    with open(RESULTS, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r[k] for k in keys})
+
+
+def read_results():
+    rows = list(csv.DictReader(open(RESULTS)))
+    for r in rows:
+        for k, v in r.items():
+            if k != "run":
+                r[k] = float(v)
+    return rows
+
+
+def richardson(rows, column):
+    """Observed order and limit from the three finest resolutions."""
+    q = [r[column] for r in rows[-3:]]
+    if len(q) < 3:
+        return None, None
+    d1, d2 = q[1] - q[0], q[2] - q[1]
+    if d1 == 0 or d2 == 0 or d1 * d2 < 0 or abs(d2) >= abs(d1):
+        return None, None  # not (yet) in the asymptotic range
+    p = math.log2(abs(d1) / abs(d2))
+    return p, q[2] + d2 / (2 ** p - 1)
+
+
+def table():
+    rows = read_results()
+    series = sorted([r for r in rows if r["delta"] == max(
+        x["delta"] for x in rows)], key=lambda r: r["level"])
+    print("| mesh | unknowns | patch cells [mm] | "
+          + " | ".join(f"{label} [{unit}]" for _, label, unit, _ in QUANTITIES)
+          + " | steps | wall [s] |")
+    print("|---" * (len(QUANTITIES) + 5) + "|")
+    for r in sorted(rows, key=lambda r: (r["level"], -r["delta"])):
+        print(f"| 2 + {int(r['level'])}, δ = {r['delta']:g} | "
+              f"{int(r['unknowns'])} | {r['patch_cell_mm']:.2f} | "
+              + " | ".join(f"{r[c]:.4g}" for c, *_ in QUANTITIES)
+              + f" | {int(r['steps'])} | {r['wall_s']:.0f} |")
+    print()
+    print("| quantity | observed order | Richardson limit | "
+          + " | ".join(f"2 + {int(r['level'])}" for r in series) + " |")
+    print("|---" * (len(series) + 3) + "|")
+    for column, label, unit, _ in QUANTITIES:
+        p, limit = richardson(series, column)
+        if limit is None:
+            print(f"| {label} [{unit}] | – | – | "
+                  + " | ".join(f"{r[column]:.4g}" for r in series) + " |")
+            continue
+        print(f"| {label} [{unit}] | {p:.2f} | {limit:.4g} | "
+              + " | ".join(f"{100 * (r[column] / limit - 1):+.1f} %"
+                           for r in series) + " |")
+
+
+def plot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    rows = read_results()
+    delta = max(r["delta"] for r in rows)
+    series = sorted([r for r in rows if r["delta"] == delta],
+                    key=lambda r: r["level"])
+    fig, axes = plt.subplots(3, 3, figsize=(11, 9))
+    for ax, (column, label, unit, _) in zip(axes.flat, QUANTITIES):
+        h = [r["patch_cell_mm"] for r in series]
+        ax.semilogx(h, [r[column] for r in series], "o-",
+                    label=f"δ = {delta:g}")
+        tight = [r for r in rows if r["delta"] < delta]
+        if tight:
+            ax.semilogx([r["patch_cell_mm"] for r in tight],
+                        [r[column] for r in tight], "s", label="δ / 10")
+        p, limit = richardson(series, column)
+        if limit is not None:
+            ax.axhline(limit, color="gray", ls="--",
+                       label=f"Richardson (p = {p:.1f})")
+        ax.set_xlabel("cell size on the patch [mm]")
+        ax.set_title(f"{label} [{unit}]")
+        ax.invert_xaxis()
+        ax.legend(fontsize=7)
+    fig.suptitle("2D wedge: event statistics against the mesh "
+                 "(2 global + K local refinements)")
+    fig.tight_layout()
+    fig.savefig(FIGURE, dpi=110)
+    print(FIGURE)
+
+
+def main():
+    if "--table" in sys.argv:
+        return table()
+    if "--plot" in sys.argv:
+        return plot()
+    os.makedirs(WORK, exist_ok=True)
+    jobs = [(k, DELTA) for k in LEVELS] + [(k, DELTA / 10) for k in TIGHT]
+    # the finest (slowest) first, so that the pool ends together
+    jobs.sort(key=lambda j: (-j[0], j[1]))
+    with concurrent.futures.ThreadPoolExecutor(JOBS) as pool:
+        list(pool.map(lambda j: run(*j), jobs))
+    # every finished run in WORK, also those of earlier invocations
+    rows = []
+    for name in sorted(os.listdir(WORK)):
+        m = re.fullmatch(r"2\+(\d+)-delta(\S+)", name)
+        if m and os.path.exists(os.path.join(WORK, name, "summary.txt")):
+            row = event_statistics(os.path.join(WORK, name))
+            row.update(run=name, level=int(m.group(1)),
+                       delta=float(m.group(2)))
+            rows.append(row)
+    write_results(rows)
+    table()
+
+
+if __name__ == "__main__":
+    main()

@@ -170,6 +170,8 @@ def richardson(rows, column):
     if d1 == 0 or d2 == 0 or d1 * d2 < 0 or abs(d2) >= abs(d1):
         return None, None  # not (yet) in the asymptotic range
     p = math.log2(abs(d1) / abs(d2))
+    if p < 0.5:
+        return None, None  # changes shrink too slowly to extrapolate
     return p, q[2] + d2 / (2 ** p - 1)
 
 

@@ -22,7 +22,7 @@ Runs are kept in WORK/<name>/ and not repeated if their summary.txt exists
 in WORK, so that the series can be extended run by run (`--levels 10`).
 
 Usage: benchmarks/convergence/run.py [BUILD_DIR] [--levels 4,5,6,7,8,9]
-           [--delta 1e-5] [--events 16] [--tight 6] [--jobs 2] [--work DIR]
+           [--delta 1e-5] [--events 16] [--tight 5] [--jobs 2] [--work DIR]
            [--rerun]
        benchmarks/convergence/run.py --table | --plot
 """
@@ -67,7 +67,7 @@ LEVELS = [int(k) for k in arg("--levels", "4,5,6,7,8,9").split(",")]
 DELTA = float(arg("--delta", "1e-5"))
 EVENTS = int(arg("--events", "16"))
 JOBS = int(arg("--jobs", "2"))
-TIGHT = [int(k) for k in arg("--tight", "6").split(",") if k]
+TIGHT = [int(k) for k in arg("--tight", "5").split(",") if k]
 WORK = arg("--work", os.path.join(HERE, "work"))
 RESULTS = os.path.join(HERE, "results.csv")
 FIGURE = os.path.join(ROOT, "doc", "figures", "convergence-2d.png")

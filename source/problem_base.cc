@@ -1,7 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
-#include <filesystem>
 #include <map>
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
@@ -442,13 +441,7 @@ namespace rsfcycle
   ProblemBase<dim>::run(const ParameterHandler &prm, const bool resume)
   {
     if (!resume)
-      {
-        const std::string dir = parameters.run.output_directory;
-        std::filesystem::create_directories(dir);
-        std::ostringstream text;
-        prm.print_parameters(text, ParameterHandler::PRM);
-        output::write_file(dir + "/parameters.prm", text.str());
-      }
+      output::write_parameters(parameters.run.output_directory, prm);
     setup();
 
     controller = time::make_controller<BodyState>(

@@ -2,7 +2,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <rsfcycle/output/files.h>
+#include <sstream>
 #include <unistd.h>
 
 namespace rsfcycle
@@ -78,6 +80,17 @@ namespace rsfcycle
       ::close(fd);
       if (error != 0)
         throw file_error(path, error);
+    }
+
+
+    void
+    write_parameters(const std::string              &dir,
+                     const dealii::ParameterHandler &prm)
+    {
+      std::filesystem::create_directories(dir);
+      std::ostringstream text;
+      prm.print_parameters(text, dealii::ParameterHandler::PRM);
+      write_file(dir + "/parameters.prm", text.str());
     }
   } // namespace output
 } // namespace rsfcycle

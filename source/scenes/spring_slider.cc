@@ -1,12 +1,10 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <filesystem>
 #include <iomanip>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/scenes/spring_slider.h>
 #include <rsfcycle/time/make_controller.h>
 #include <rsfcycle/time/run_loop.templates.h>
-#include <sstream>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -316,13 +314,7 @@ namespace rsfcycle
                       const bool              resume)
     {
       if (!resume)
-        {
-          const std::string dir = parameters.run.output_directory;
-          std::filesystem::create_directories(dir);
-          std::ostringstream text;
-          prm.print_parameters(text, ParameterHandler::PRM);
-          output::write_file(dir + "/parameters.prm", text.str());
-        }
+        output::write_parameters(parameters.run.output_directory, prm);
 
       std::unique_ptr<time::Controller<State>> controller;
       if (integrator == "arkode")

@@ -1,6 +1,7 @@
 #ifndef rsfcycle_output_files_h
 #define rsfcycle_output_files_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +43,15 @@ namespace rsfcycle
      */
     void
     sync_to_disk(const std::string &path);
+
+    /**
+     * Create the run folder `dir` if needed and write every parameter of
+     * `prm` to dir/parameters.prm (the record of the run, and what
+     * `--resume` reads).
+     */
+    void
+    write_parameters(const std::string              &dir,
+                     const dealii::ParameterHandler &prm);
   } // namespace output
 } // namespace rsfcycle
 

@@ -115,6 +115,26 @@ namespace rsfcycle
                       "fixed-point iteration of every spatial problem from "
                       "the state and velocity extrapolated from the last "
                       "accepted steps (true) or from the old ones (false)");
+    prm.declare_entry("Step sizes",
+                      "ladder",
+                      Selection("ladder|free"),
+                      "With Controller = local-extrapolation: ladder keeps "
+                      "every step size at Initial step x 2^k (halved on "
+                      "rejection, doubled when 8 x estimate <= Tolerance/2), "
+                      "so that step matrices, factorisations and multigrid "
+                      "level matrices are computed once per size and "
+                      "reused; free takes tau x min(2, max(0.2, 0.9 "
+                      "(Tolerance/estimate)^(1/3))) after every pair and "
+                      "rejection (new matrices for every step size; "
+                      "benchmarks/time-stepping/README.md compares both)");
+    prm.declare_entry("Doubling threshold",
+                      "1",
+                      Double(1e-3, 8),
+                      "With Controller = local-extrapolation and Step sizes "
+                      "= ladder: after an accepted pair the step size is "
+                      "doubled if 8 x its error estimate (the estimate of "
+                      "the doubled step: it grows as tau^3) is at most this "
+                      "factor x Tolerance [-]");
     prm.declare_entry("Tolerance",
                       "1e-5",
                       Double(1e-300, 1),
@@ -144,6 +164,8 @@ namespace rsfcycle
     adaptive           = prm.get_bool("Adaptive");
     controller         = prm.get("Controller");
     extrapolated_start = prm.get_bool("Extrapolated start");
+    step_sizes         = prm.get("Step sizes");
+    doubling_threshold = prm.get_double("Doubling threshold");
     tolerance          = prm.get_double("Tolerance");
     initial_step       = prm.get_double("Initial step");
     minimum_step       = prm.get_double("Minimum step");

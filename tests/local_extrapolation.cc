@@ -3,12 +3,12 @@
 // y -> y (1 - k tau/2)/(1 + k tau/2) (second order, like the Newmark step),
 // with the distance |log y1 - log y2|:
 //  - the estimate (one step of tau against two of tau/2) is
-//    (k tau)^3 / 16, and tau is doubled while 8 x estimate <= tolerance / 2,
-//    so with tolerance 1e-6 and k = 1 the pairs are 0.016 (a power of two
-//    times the initial step 1e-3; estimate 2.6e-7), the accepted half steps
-//    0.008; the rate
-//    jump k = 1 -> 1000 on [5, 5.2) shrinks them by ~1000 (printed: 1024)
-//    and they grow back; the final time is exactly the end time;
+//    (k tau)^3 / 16, and tau is doubled while 8 x estimate <= tolerance
+//    (Doubling threshold 1; the same steps with 0.5), so with tolerance 1e-6
+//    and k = 1 the pairs are 0.016 (a power of two times the initial step 1e-3;
+//    estimate 2.6e-7), the accepted half steps 0.008; the rate jump k = 1 ->
+//    1000 on [5, 5.2) shrinks them by ~1000 (printed: 1024) and they grow back;
+//    the final time is exactly the end time;
 //  - cost and accuracy against step doubling at the same tolerance, with
 //    the same stepper, on k = 1: the trapezoidal error of one step is
 //    tau^3 / 12 in log y. Local extrapolation takes 625 pairs of two half
@@ -20,7 +20,13 @@
 //  - memory(): a controller restored from the memory of another one in
 //    the middle of a run continues it bitwise identically (checkpoints);
 //  - a stepper that fails for tau > 0.05 only ever gets smaller steps
-//    accepted; one that always fails ends in StepSizeUnderflow.
+//    accepted; one that always fails ends in StepSizeUnderflow;
+//  - free step sizes (Step sizes = free): tau -> tau min(2, 0.9
+//    (tolerance/estimate)^(1/3)) settles where 0.9^3 x 16 x tolerance =
+//    (k tau)^3, i.e. pairs of 0.9 (1.6e-5)^(1/3) = 0.022679 (half steps
+//    0.011339) for k = 1 and 1000 x smaller (1.1339e-5) for k = 1000; on
+//    k = 1 that is 10/0.022679 = 441 pairs (3 calls each), error
+//    441 * 2 * 0.011339^3 / 12 = 1.07e-4.
 #include "tests.h"
 
 #include <algorithm>
@@ -90,7 +96,7 @@ main()
 
   {
     LocalExtrapolation<double> controller(
-      stepper, distance, combine, true, 1e-6, 1e-3, 1e-12, 10.);
+      stepper, distance, combine, true, true, 1., 1e-6, 1e-3, 1e-12, 10.);
     double       y = 1, t = 0;
     unsigned int steps = 0;
     double max_before = 0, min_during = 1e300, max_during = 0, max_after = 0;
@@ -139,6 +145,8 @@ main()
       distance,
       combine,
       true,
+      true,
+      1.,
       1e-6,
       1e-3,
       1e-12,
@@ -186,12 +194,12 @@ main()
         return trapezoid(y, t, tau);
       };
     LocalExtrapolation<double> a(
-      plain, distance, combine, true, 1e-6, 1e-3, 1e-12, 10.);
+      plain, distance, combine, true, true, 0.5, 1e-6, 1e-3, 1e-12, 10.);
     double y_a = 1, t_a = 0;
     for (unsigned int i = 0; i < 101; ++i) // odd: a half step is pending
       a.advance(y_a, t_a, 10.);
     LocalExtrapolation<double> b(
-      plain, distance, combine, true, 1e-6, 1., 1e-12, 10.);
+      plain, distance, combine, true, true, 0.5, 1e-6, 1., 1e-12, 10.);
     b.restore(a.memory());
     double y_b = y_a, t_b = t_a;
     while (10. - t_a > 1e-12)
@@ -212,7 +220,7 @@ main()
       return trapezoid(y, t, tau);
     };
     LocalExtrapolation<double> controller(
-      failing, distance, combine, true, 1e-2, 1., 1e-12, 10.);
+      failing, distance, combine, true, true, 0.5, 1e-2, 1., 1e-12, 10.);
     double y = 1, t = 0, largest = 0;
     while (2. - t > 1e-12)
       {
@@ -225,6 +233,55 @@ main()
   }
 
   {
+    // free step sizes on the rate jump and on the smooth problem
+    const auto plain =
+      [](const double &y, const double t, const double tau, const double *) {
+        return trapezoid(y, t, tau);
+      };
+    LocalExtrapolation<double> controller(
+      plain, distance, combine, true, false, 1, 1e-6, 1e-3, 1e-12, 10.);
+    double y = 1, t = 0, before = 0, during = 0;
+    while (10. - t > 1e-12)
+      {
+        const double t0 = t;
+        controller.advance(y, t, 10.);
+        if (t0 > 4 && t0 < 4.9)
+          before = controller.last_step_size();
+        if (t0 > 5.1 && t0 < 5.15)
+          during = controller.last_step_size();
+      }
+    dealii::deallog << "free step sizes: half steps before the jump " << before
+                    << ", during " << during << ", final time " << t
+                    << std::endl;
+
+    unsigned int               n_calls = 0;
+    LocalExtrapolation<double> smooth(
+      [&](const double &y0, const double, const double tau, const double *) {
+        ++n_calls;
+        return std::optional<double>(y0 * (1 - tau / 2) / (1 + tau / 2));
+      },
+      distance,
+      combine,
+      true,
+      false,
+      1.,
+      1e-6,
+      1e-3,
+      1e-12,
+      10.);
+    double       y_s = 1, t_s = 0;
+    unsigned int steps = 0;
+    while (10. - t_s > 1e-12)
+      {
+        smooth.advance(y_s, t_s, 10.);
+        ++steps;
+      }
+    dealii::deallog << "free step sizes, k = 1: " << steps << " steps, "
+                    << n_calls << " calls, |log y(10) + 10| = "
+                    << std::abs(std::log(y_s) + 10.) << std::endl;
+  }
+
+  {
     const auto always_failing = [](const double &,
                                    const double,
                                    const double,
@@ -232,7 +289,7 @@ main()
       return {};
     };
     LocalExtrapolation<double> controller(
-      always_failing, distance, combine, true, 1e-2, 1., 1e-6, 10.);
+      always_failing, distance, combine, true, true, 0.5, 1e-2, 1., 1e-6, 10.);
     double y = 1, t = 0;
     try
       {

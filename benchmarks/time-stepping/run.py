@@ -19,6 +19,11 @@ per spatial problem, and the errors. All runs of one invocation share the
 machine, so ratios are what to read. Writes results.csv and
 doc/figures/time-stepping.png; `--table` prints the table of README.md.
 
+Local extrapolation runs with its default (Step sizes = ladder, Doubling
+threshold 1) at every tolerance, and with threshold 0.5 and with free step
+sizes at the looser ones; the wedge also with the multigrid correction
+(ladder and free, 1e-5), since free step sizes need new matrices.
+
 Usage: benchmarks/time-stepping/run.py [BUILD_DIR] [--parts slider,wedge]
            [--depth 6] [--work DIR] [--reuse-preload]
        benchmarks/time-stepping/run.py --table | --plot
@@ -35,8 +40,44 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, os.path.dirname(HERE))
 import common  # noqa: E402  (benchmarks/common.py)
 T0, T1 = 520.0, 545.0
-TOLERANCES = [1e-5, 1e-6, 1e-7]
-CONTROLLERS = ["step-doubling", "local-extrapolation"]
+
+
+def variant(controller, tol, steps="ladder", threshold=1.0, extrapolate=True,
+            correction="direct"):
+    """One run's settings; `steps`, `threshold` and `extrapolate` are
+    local extrapolation's (Step sizes, Doubling threshold, Extrapolated
+    start), `correction` the wedge's Linear correction."""
+    if controller == "step-doubling":
+        steps, threshold, extrapolate = "", "", ""
+    return dict(controller=controller, tolerance=tol, step_sizes=steps,
+                doubling_threshold=threshold, extrapolated_start=extrapolate,
+                correction=correction)
+
+
+def name(v):
+    if v["controller"] == "step-doubling":
+        n = f"step-doubling-{v['tolerance']:g}"
+    else:
+        n = (f"local-extrapolation-{v['step_sizes']}"
+             + (f"-{v['doubling_threshold']:g}"
+                if v["step_sizes"] == "ladder" else "")
+             + f"-{v['tolerance']:g}"
+             + ("" if v["extrapolated_start"] else "-old-start"))
+    return n + ("" if v["correction"] == "direct" else "-" + v["correction"])
+
+
+def variants(tolerances, loose):
+    """Step doubling and local extrapolation (ladder, Doubling threshold 1:
+    the default) at `tolerances`; the ladder with threshold 0.5 and free
+    step sizes at the `loose` ones; the default without extrapolated start
+    at 1e-6."""
+    return ([variant("step-doubling", t) for t in tolerances]
+            + [variant("local-extrapolation", t) for t in tolerances]
+            + [variant("local-extrapolation", t, threshold=0.5)
+               for t in loose]
+            + [variant("local-extrapolation", t, steps="free")
+               for t in loose]
+            + [variant("local-extrapolation", 1e-6, extrapolate=False)])
 
 
 def arg(name, default):
@@ -75,7 +116,8 @@ def counts(rows):
 
 
 # ---------------------------------------------------------------- slider
-def slider_prm(name, controller, tol, extrapolate=True, arkode=False):
+def slider_prm(name, controller, tol, extrapolate=True, arkode=False,
+               steps="ladder", threshold=1.0):
     d = os.path.join(WORK, "slider", name)
     prm = d + ".prm"
     with open(prm, "w") as f:
@@ -86,6 +128,8 @@ set Overwrite output = true
 subsection Time stepping
   set Controller         = {controller}
   set Extrapolated start = {str(extrapolate).lower()}
+  set Step sizes         = {steps}
+  set Doubling threshold = {threshold:g}
   set Tolerance          = {tol:g}
   set Minimum step       = 1e-14
 end
@@ -118,11 +162,11 @@ def slider_part():
     run([prm], d + ".log")
     ref = slider_events(d)
     rows = []
-    variants = [(c, t, True) for c in CONTROLLERS for t in TOLERANCES]
-    variants.append(("local-extrapolation", 1e-6, False))
-    for controller, tol, extrapolate in variants:
-        name = f"{controller}-{tol:g}" + ("" if extrapolate else "-old-start")
-        d, prm = slider_prm(name, controller, tol, extrapolate)
+    for v in variants([1e-5, 1e-6, 1e-7], [1e-5, 1e-6, 1e-7]):
+        d, prm = slider_prm(name(v), v["controller"], v["tolerance"],
+                            v["extrapolated_start"] is not False,
+                            steps=v["step_sizes"] or "ladder",
+                            threshold=v["doubling_threshold"] or 1.0)
         walls = []
         for _ in range(3):
             run([prm], d + ".log")
@@ -131,8 +175,7 @@ def slider_part():
                                          log).group(1)))
         ts = list(csv.DictReader(open(os.path.join(d, "time-series.csv"))))
         e = slider_events(d)
-        row = dict(case="slider", controller=controller, tolerance=tol,
-                   extrapolated_start=extrapolate, wall_s=min(walls),
+        row = dict(case="slider", **dict(v, correction=""), wall_s=min(walls),
                    **counts(ts),
                    error_start=abs(e["first"] - ref["first"]),
                    error_peak=abs(e["peak"] / ref["peak"] - 1),
@@ -144,17 +187,23 @@ def slider_part():
 
 
 # ----------------------------------------------------------------- wedge
-def wedge_window(name, controller, tol, extrapolate=True):
+def wedge_window(v):
     pre = os.path.join(WORK, f"wedge-pre-{DEPTH}")
-    out = os.path.join(WORK, f"wedge-{DEPTH}-{name}")
+    out = os.path.join(WORK, f"wedge-{DEPTH}-{name(v)}")
     shutil.rmtree(out, ignore_errors=True)
     shutil.copytree(pre, out)
     prm = os.path.join(out, "parameters.prm")
-    for key, value in {"End time": T1, "Output directory": out,
-                       "Controller": controller,
-                       "Extrapolated start": str(extrapolate).lower(),
-                       "Tolerance": f"{tol:g}",
-                       "Fixed-point tolerance": f"{tol:g}"}.items():
+    entries = {"End time": T1, "Output directory": out,
+               "Controller": v["controller"],
+               "Linear correction": v["correction"],
+               "Tolerance": f"{v['tolerance']:g}",
+               "Fixed-point tolerance": f"{v['tolerance']:g}"}
+    if v["controller"] == "local-extrapolation":
+        entries.update({
+            "Extrapolated start": str(v["extrapolated_start"]).lower(),
+            "Step sizes": v["step_sizes"],
+            "Doubling threshold": f"{v['doubling_threshold']:g}"})
+    for key, value in entries.items():
         set_entry(prm, key, value)
     run(["--resume", out], out + ".log")
     log = open(out + ".log").read()
@@ -172,17 +221,20 @@ def wedge_part():
         os.makedirs(WORK, exist_ok=True)
         prm = pre + ".prm"
         with open(prm, "w") as f:
-            f.write(common.wedge_prm(ROOT, DEPTH, pre, T0))
+            f.write(common.wedge_prm(
+                ROOT, DEPTH, pre, T0,
+                "subsection Time stepping\n"
+                "  set Controller = step-doubling\nend\n"))
         t = run([prm], pre + ".log")
         print(f"preload to {T0} s: {t:.0f} s", flush=True)
-    _, ref_counts, ref = wedge_window("reference", "step-doubling", 1e-8)
+    _, ref_counts, ref = wedge_window(variant("step-doubling", 1e-8))
     print("reference", ref_counts, len(ref), "events", flush=True)
     rows = []
-    variants = [(c, t, True) for c in CONTROLLERS for t in TOLERANCES]
-    variants.append(("local-extrapolation", 1e-6, False))
-    for controller, tol, extrapolate in variants:
-        name = f"{controller}-{tol:g}" + ("" if extrapolate else "-old-start")
-        _, c, ev = wedge_window(name, controller, tol, extrapolate)
+    todo = variants([1e-4, 1e-5, 1e-6, 1e-7], [1e-4, 1e-5, 1e-6])
+    todo += [variant("local-extrapolation", 1e-5, steps=s,
+                     correction="multigrid") for s in ("ladder", "free")]
+    for v in todo:
+        _, c, ev = wedge_window(v)
         n = min(len(ev), len(ref))
         err = dict(
             error_start=max(abs(float(ev[i]["start_s"]) -
@@ -196,21 +248,30 @@ def wedge_part():
             error_period="")
         if len(ev) != len(ref):
             err["error_start"] = math.inf  # an event missed or added
-        row = dict(case=f"wedge-2+{DEPTH}", controller=controller,
-                   tolerance=tol, extrapolated_start=extrapolate, **c, **err)
+        row = dict(case=f"wedge-2+{DEPTH}", **v, **c, **err)
         print(row, flush=True)
         rows.append(row)
     return rows
 
 
-FIELDS = ["case", "controller", "tolerance", "extrapolated_start", "steps",
+FIELDS = ["case", "controller", "tolerance", "step_sizes",
+          "doubling_threshold", "extrapolated_start", "correction", "steps",
           "spatial_problems", "fp_per_step", "tnnmg_per_problem", "wall_s",
           "error_start", "error_peak", "error_period", "error_slip"]
 
 
+def label(r):
+    if r["controller"] == "step-doubling":
+        return "step doubling"
+    lab = ("local extrapolation, " + r["step_sizes"]
+           + (f" {float(r['doubling_threshold']):g}"
+              if r["step_sizes"] == "ladder" else ""))
+    return lab + ("" if r["extrapolated_start"] == "True" else ", old start")
+
+
 def table():
     rows = list(csv.DictReader(open(RESULTS)))
-    print("| case | controller | δ = ε | extrapolated start | steps | "
+    print("| case | controller | correction | δ = ε | steps | "
           "spatial problems | FP/step | TNNMG/problem | wall [s] | "
           "start error [s] | peak error | period error | slip error |")
     print("|" + "---|" * 13)
@@ -221,14 +282,53 @@ def table():
                 return f"{float(v):.3g}"
             except ValueError:
                 return v or "–"
-        start = ("–" if r["controller"] == "step-doubling" else
-                 "yes" if r["extrapolated_start"] == "True" else "no")
-        print(f"| {r['case']} | {r['controller']} | {g('tolerance')} | "
-              f"{start} | {r['steps']} | "
+        print(f"| {r['case']} | {label(r)} | {r['correction'] or '–'} | "
+              f"{g('tolerance')} | {r['steps']} | "
               f"{r['spatial_problems']} | {g('fp_per_step')} | "
               f"{g('tnnmg_per_problem')} | {g('wall_s')} | "
               f"{g('error_start')} | {g('error_peak')} | "
               f"{g('error_period')} | {g('error_slip')} |")
+    ratios(rows)
+
+
+def interpolate(points, error):
+    """log-log interpolation of (error, cost) pairs to `error`; None
+    outside their range."""
+    points = sorted(points)
+    for (e0, c0), (e1, c1) in zip(points, points[1:]):
+        if e0 <= error <= e1 and e0 < e1:
+            w = math.log(error / e0) / math.log(e1 / e0)
+            return math.exp((1 - w) * math.log(c0) + w * math.log(c1))
+    return None
+
+
+def ratios(rows):
+    """Equal accuracy: each local-extrapolation variant's spatial problems
+    and wall time interpolated to step doubling's error, as a fraction of
+    step doubling's."""
+    print()
+    print("| case | error | step doubling δ | variant | problems ratio | "
+          "wall ratio |")
+    print("|---|---|---|---|---|---|")
+    for case in sorted({r["case"] for r in rows}, reverse=True):
+        key = "error_period" if case == "slider" else "error_peak"
+        sel = [r for r in rows if r["case"] == case
+               and r["correction"] in ("", "direct")
+               and r["extrapolated_start"] != "False"]
+        for sd in [r for r in sel if r["controller"] == "step-doubling"]:
+            for lab in sorted({label(r) for r in sel} - {"step doubling"}):
+                pts = [r for r in sel if label(r) == lab]
+                e = float(sd[key])
+                p = interpolate([(float(r[key]), float(r["spatial_problems"]))
+                                 for r in pts], e)
+                w = interpolate([(float(r[key]), float(r["wall_s"]))
+                                 for r in pts], e)
+                if p is None:
+                    continue
+                print(f"| {case} | {key[6:]} {e:.3g} | "
+                      f"{float(sd['tolerance']):g} | {lab} | "
+                      f"{p / float(sd['spatial_problems']):.3f} | "
+                      f"{w / float(sd['wall_s']):.3f} |")
 
 
 def plot():
@@ -236,33 +336,36 @@ def plot():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = [r for r in csv.DictReader(open(RESULTS))
-            if r["extrapolated_start"] == "True"]
+            if r["extrapolated_start"] != "False"
+            and r["correction"] in ("", "direct")]
     cases = sorted({r["case"] for r in rows}, reverse=True)
-    fig, axes = plt.subplots(len(cases), 2, figsize=(10, 4 * len(cases)),
+    fig, axes = plt.subplots(len(cases), 2, figsize=(11, 4.5 * len(cases)),
                              squeeze=False)
     for i, case in enumerate(cases):
         # the wedge's event starts are quantised by the steps at the onset
         # (table): its peak slip rates show the convergence
         key = "error_period" if case == "slider" else "error_peak"
-        label = ("relative error of the recurrence time" if case == "slider"
-                 else "max relative error of the peak slip rates")
-        for controller, marker in zip(CONTROLLERS, "os"):
-            sel = [r for r in rows
-                   if r["case"] == case and r["controller"] == controller]
+        ylabel = ("relative error of the recurrence time" if case == "slider"
+                  else "max relative error of the peak slip rates")
+        labels = sorted({label(r) for r in rows if r["case"] == case},
+                        key=lambda lab: (lab != "step doubling", lab))
+        for lab, marker in zip(labels, "osd^v"):
+            sel = [r for r in rows if r["case"] == case and label(r) == lab]
+            sel.sort(key=lambda r: float(r["tolerance"]))
             for j, x in enumerate(["spatial_problems", "wall_s"]):
                 axes[i][j].loglog([float(r[x]) for r in sel],
                                   [float(r[key]) for r in sel],
-                                  marker + "-", label=controller)
+                                  marker + "-", label=lab)
                 for r in sel:
                     axes[i][j].annotate(f"{float(r['tolerance']):g}",
                                         (float(r[x]), float(r[key])),
                                         fontsize=7)
         for j, x in enumerate(["spatial problems", "wall time [s]"]):
             axes[i][j].set_xlabel(x)
-            axes[i][j].set_ylabel(label)
+            axes[i][j].set_ylabel(ylabel)
             axes[i][j].set_title(case)
             axes[i][j].grid(True, which="both", alpha=0.3)
-            axes[i][j].legend()
+            axes[i][j].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(ROOT, "doc", "figures", "time-stepping.png"),
                 dpi=110)

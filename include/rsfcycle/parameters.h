@@ -43,6 +43,8 @@ namespace rsfcycle
     bool        adaptive           = true;
     std::string controller         = "local-extrapolation";
     bool        extrapolated_start = true;
+    std::string step_sizes         = "ladder";
+    double      doubling_threshold = 1;
     double      tolerance          = 1e-5;
     double      initial_step       = 1e-2;
     double      minimum_step       = 1e-9;

@@ -1,7 +1,9 @@
 #ifndef rsfcycle_time_local_extrapolation_h
 #define rsfcycle_time_local_extrapolation_h
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <rsfcycle/format.h>
@@ -21,14 +23,20 @@ namespace rsfcycle
      * tolerance, the two half steps (the more accurate result) are the next
      * two accepted steps (the second is returned by the next advance()
      * without a new solve); otherwise tau is halved and the step repeated.
-     * After an accepted pair, tau is doubled if the estimate would stay
-     * below the tolerance with half a margin (the estimate grows as tau^3:
-     * 8 x estimate <= tolerance / 2). That is 3 spatial problems per two
-     * accepted steps, against 3 - 4 per accepted step for the paper's
+     * After an accepted pair, tau is doubled if the estimate of the
+     * doubled step, 8 x estimate (the estimate grows as tau^3), is at most
+     * `doubling_threshold` x tolerance (`Time stepping/Doubling
+     * threshold`, default 1; 0.5 until 2026-11). That is 3 spatial problems per
+     * two accepted steps, against 3 - 4 per accepted step for the paper's
      * controller, whose coarsening test fails in most steps.
      *
-     * Step sizes stay on the power-of-two ladder Initial step x 2^k, so
+     * With `ladder` (`Time stepping/Step sizes = ladder`, the default),
+     * step sizes stay on the power-of-two ladder Initial step x 2^k, so
      * that step matrices, factorisations and level matrices are reused.
+     * Without it, every pair and every rejection sets the next step from
+     * the estimate, tau x min(2, max(0.2, 0.9 (tolerance/estimate)^(1/3)))
+     * (at most 0.9 tau after a rejection, half of it after a failed
+     * solve), and every new step size needs new matrices.
      *
      * With `extrapolate`, every spatial problem starts its fixed-point
      * iteration from a prediction instead of the old state: the whole step
@@ -60,6 +68,8 @@ namespace rsfcycle
                          Distance     distance,
                          Combine      combine,
                          const bool   extrapolate,
+                         const bool   ladder,
+                         const double doubling_threshold,
                          const double tolerance,
                          const double initial_step,
                          const double min_step,
@@ -68,6 +78,8 @@ namespace rsfcycle
         , distance(std::move(distance))
         , combine(std::move(combine))
         , extrapolate(extrapolate)
+        , ladder(ladder)
+        , doubling_threshold(doubling_threshold)
         , tolerance(tolerance)
         , tau(initial_step)
         , min_step(min_step)
@@ -94,18 +106,26 @@ namespace rsfcycle
             if (step_pair(current, t, dt, estimate))
               {
                 last_step = dt / 2;
-                if (!clamped && 8 * estimate <= 0.5 * tolerance &&
-                    2 * tau <= max_step)
+                if (clamped)
+                  return; // the step size of the interior steps stays
+                if (!ladder)
+                  tau = std::min(dt * factor(estimate, 2.), max_step);
+                else if (8 * estimate <= doubling_threshold * tolerance &&
+                         2 * tau <= max_step)
                   tau *= 2;
                 return;
               }
-            if (dt / 2 < min_step)
+            const double next =
+              ladder ?
+                dt / 2 :
+                dt * (failed ? 0.5 : std::min(0.9, factor(estimate, 1.)));
+            if (next < min_step)
               throw StepSizeUnderflow(
-                "step size " + format_number(dt / 2) + " s below the minimum " +
+                "step size " + format_number(next) + " s below the minimum " +
                 format_number(min_step) + " s: the spatial problem " +
                 (failed ? "failed to converge" :
                           "is not resolved to the tolerance"));
-            tau = dt / 2;
+            tau = next;
           }
       }
 
@@ -170,6 +190,19 @@ namespace rsfcycle
       }
 
     private:
+      /**
+       * The free step sizes' factor 0.9 (tolerance/estimate)^(1/3) (the
+       * estimate grows as tau^3), between 0.2 and `largest`.
+       */
+      double
+      factor(const double estimate, const double largest) const
+      {
+        if (!(estimate > 0))
+          return largest;
+        return std::min(largest,
+                        std::max(0.2, 0.9 * std::cbrt(tolerance / estimate)));
+      }
+
       /**
        * The whole step of dt and its two halves; if they agree, accept the
        * first half and keep the second pending. `estimate` receives their
@@ -250,6 +283,8 @@ namespace rsfcycle
       Distance             distance;
       Combine              combine;
       bool                 extrapolate;
+      bool                 ladder;
+      double               doubling_threshold;
       double               tolerance;
       double               tau;
       double               min_step;

@@ -30,14 +30,17 @@ namespace rsfcycle
           std::move(distance),
           std::move(combine),
           ts.extrapolated_start,
+          ts.step_sizes == "ladder",
+          ts.doubling_threshold,
           ts.tolerance,
           ts.initial_step,
           ts.minimum_step,
           ts.maximum_step);
-      if (ts.controller != "step-doubling" && ts.controller != "predictor")
+      if (ts.controller != "step-doubling" &&
+          ts.controller != "local-extrapolation")
         throw std::invalid_argument(
           "Time stepping/Controller = " + ts.controller +
-          ": allowed are step-doubling|predictor");
+          ": allowed are step-doubling|local-extrapolation");
       return std::make_unique<StepDoubling<State>>(
         [stepper](const State &s, const double t, const double tau) {
           return stepper(s, t, tau, nullptr);

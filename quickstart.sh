@@ -15,7 +15,7 @@ fi
 jobs=${JOBS:-2}
 
 # 1. Debian packages (only if one is missing; needs root).
-packages=(libdeal.ii-dev libsuitesparse-dev cmake g++ make numdiff
+packages=(libdeal.ii-dev libsuitesparse-dev openmpi-bin cmake g++ make numdiff
   python3-matplotlib python3-numpy clang-format-14)
 missing=()
 for p in "${packages[@]}"; do

@@ -2,9 +2,11 @@
 // base (Pipping, Kornhuber, Rosenau, Oncken 2016). The thin driver: read the
 // parameter file, build the scene, run the generic solver.
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -18,6 +20,7 @@
 #include <rsfcycle/scenes/registry.h>
 #include <streambuf>
 #include <string>
+#include <utility>
 
 namespace
 {
@@ -147,6 +150,27 @@ namespace
   }
 
   /**
+   * The number of processes and this process's rank as the MPI launcher
+   * (Open MPI's mpirun, or a PMI launcher such as MPICH's or Slurm's) set
+   * them in the environment, known before MPI is started (the spring-slider
+   * never starts it); 1 and 0 without a launcher.
+   */
+  std::pair<unsigned int, unsigned int>
+  launched_processes()
+  {
+    for (const auto &[size, rank] :
+         {std::pair{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK"},
+          std::pair{"PMI_SIZE", "PMI_RANK"},
+          std::pair{"SLURM_NTASKS", "SLURM_PROCID"}})
+      if (const char *n = std::getenv(size))
+        {
+          const char *r = std::getenv(rank);
+          return {std::max(1, std::atoi(n)), r ? std::atoi(r) : 0};
+        }
+    return {1, 0};
+  }
+
+  /**
    * Build the scene's simulation (bad input fails here, before anything is
    * written), start MPI if it needs it (one thread either way), prepare the
    * run folder and the log, run. Returns false if the run was interrupted by
@@ -161,10 +185,22 @@ namespace
       char                                                  **&argv)
   {
     const auto simulation = rsfcycle::scenes::make_simulation(parameters, prm);
+    const unsigned int n_processes = launched_processes().first;
+    if (!simulation->needs_mpi() && n_processes > 1)
+      throw std::invalid_argument(
+        "Scene = " + parameters.run.scene + " runs on one MPI rank, not on " +
+        std::to_string(n_processes) + ": start it without mpirun");
     if (simulation->needs_mpi())
       mpi.emplace(argc, argv, 1);
     else
       dealii::MultithreadInfo::set_thread_limit(1);
+    if (n_processes > 1)
+      throw std::invalid_argument(
+        "Scene = " + parameters.run.scene +
+        " runs on one MPI rank in this "
+        "version, not on " +
+        std::to_string(n_processes) +
+        " (distributed meshes are being added): start it without mpirun");
     if (!resume)
       prepare_output_directory(parameters.run.output_directory,
                                parameters.run.overwrite_output);
@@ -247,7 +283,9 @@ main(int argc, char **argv)
     }
   catch (std::exception &exc)
     {
-      std::cerr << "rsfcycle: error: " << one_line(exc.what()) << std::endl;
+      // every process fails alike; one line from the first
+      if (launched_processes().second == 0)
+        std::cerr << "rsfcycle: error: " << one_line(exc.what()) << std::endl;
       return 1;
     }
   catch (...)

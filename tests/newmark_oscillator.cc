@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <rsfcycle/ids.h>
@@ -119,8 +120,10 @@ public:
 };
 
 int
-main()
+main(int argc, char **argv)
 {
+  // the mesh is a parallel::distributed::Triangulation: MPI, one process
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(6);
   Parameters parameters;
   parameters.mesh.global_refinements = 2;

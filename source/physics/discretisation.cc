@@ -15,7 +15,10 @@ namespace rsfcycle
     template <int dim>
     Discretisation<dim>::Discretisation(const MeshParameters     &mesh,
                                         const scenes::Scene<dim> &scene)
-      : triangulation(Triangulation<dim>::limit_level_difference_at_vertices)
+      : triangulation(MPI_COMM_WORLD,
+                      Triangulation<dim>::limit_level_difference_at_vertices,
+                      parallel::distributed::Triangulation<
+                        dim>::construct_multigrid_hierarchy)
       , fe(FE_Q<dim>(1), dim)
       , dof_handler(triangulation)
       , scalar_fe(1)
@@ -48,8 +51,9 @@ namespace rsfcycle
       for (unsigned int cycle = 0; cycle < mesh.local_refinements; ++cycle)
         {
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (scene.distance_to_patch(cell->center()) <
-                mesh.refinement_distance * cell->diameter())
+            if (cell->is_locally_owned() &&
+                scene.distance_to_patch(cell->center()) <
+                  mesh.refinement_distance * cell->diameter())
               cell->set_refine_flag();
           triangulation.execute_coarsening_and_refinement();
         }

@@ -2,6 +2,7 @@
 #define rsfcycle_physics_discretisation_h
 
 #include <array>
+#include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -102,13 +103,13 @@ namespace rsfcycle
       std::vector<unsigned int>
       dof_components() const;
 
-      Triangulation<dim>        triangulation;
-      FESystem<dim>             fe;
-      DoFHandler<dim>           dof_handler;
-      FE_Q<dim>                 scalar_fe;
-      DoFHandler<dim>           scalar_dof_handler;
-      AffineConstraints<double> hanging_constraints;
-      AffineConstraints<double> scalar_constraints;
+      parallel::distributed::Triangulation<dim> triangulation;
+      FESystem<dim>                             fe;
+      DoFHandler<dim>                           dof_handler;
+      FE_Q<dim>                                 scalar_fe;
+      DoFHandler<dim>                           scalar_dof_handler;
+      AffineConstraints<double>                 hanging_constraints;
+      AffineConstraints<double>                 scalar_constraints;
 
       SparsityPattern      sparsity_pattern;
       SparseMatrix<double> mass_matrix, viscosity_matrix, stiffness_matrix;

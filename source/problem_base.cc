@@ -178,10 +178,9 @@ namespace rsfcycle
           "node at s = " +
           format_number(scene.along_base_coordinate(node.position)) + " m");
 
-    const auto n_dofs = discretisation.dof_handler.n_dofs();
-    initial.u         = u;
-    initial.v.reinit(n_dofs);
-    initial.a.reinit(n_dofs);
+    initial.u = u;
+    discretisation.reinit(initial.v);
+    discretisation.reinit(initial.a);
     initial.alpha.assign(contact.n_nodes(), 0.);
     initial.shear_traction.assign(contact.n_nodes(), 0.);
   }
@@ -256,15 +255,17 @@ namespace rsfcycle
   double
   ProblemBase<dim>::energy(const BodyState &state) const
   {
-    return 0.5 * discretisation.mass_matrix.matrix_norm_square(state.v) +
-           0.5 * discretisation.stiffness_matrix.matrix_norm_square(state.u) -
+    return 0.5 * discretisation.local(discretisation.mass_matrix)
+                   .matrix_norm_square(state.v) +
+           0.5 * discretisation.local(discretisation.stiffness_matrix)
+                   .matrix_norm_square(state.u) -
            discretisation.body_force * state.u;
   }
 
 
   template <int dim>
   std::vector<double>
-  ProblemBase<dim>::observed_uplift(const Vector<double> &u) const
+  ProblemBase<dim>::observed_uplift(const la::Vector &u) const
   {
     // Hanging-node values are set in u (distribute), so the interpolation
     // may use any dof of the cell.
@@ -302,7 +303,7 @@ namespace rsfcycle
 
   template <int dim>
   std::vector<double>
-  ProblemBase<dim>::slip_rates(const Vector<double> &v) const
+  ProblemBase<dim>::slip_rates(const la::Vector &v) const
   {
     return contact.slip_rates(v);
   }
@@ -457,7 +458,7 @@ namespace rsfcycle
          const std::array<double, 3>            &w) {
         // a prediction: the velocity and the state (what a guess gives)
         BodyState p;
-        p.v.reinit(s[2]->v.size());
+        p.v.reinit(s[2]->v);
         for (unsigned int i = 0; i < 3; ++i)
           p.v.add(w[i], s[i]->v);
         p.alpha.assign(s[2]->alpha.size(), 0.);

@@ -164,8 +164,8 @@ main(int argc, char **argv)
   double previous = 0;
   for (const unsigned int n : {100, 200, 400, 800})
     {
-      const auto     result = run(n);
-      Vector<double> diff   = result.first;
+      const auto result = run(n);
+      la::Vector diff   = result.first;
       diff -= reference.first;
       const double error = diff.l2_norm() / reference.first.l2_norm();
       dealii::deallog << "steps " << n << ": relative error of u(T) " << error;

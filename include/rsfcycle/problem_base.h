@@ -7,6 +7,7 @@
 #include <optional>
 #include <ostream>
 #include <rsfcycle/friction/contact_quadrature.h>
+#include <rsfcycle/la.h>
 #include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/discretisation.h>
@@ -80,7 +81,7 @@ namespace rsfcycle
 
     /** Slip rate |v_T| of every contact node. */
     std::vector<double>
-    slip_rates(const Vector<double> &v) const;
+    slip_rates(const la::Vector &v) const;
 
     /**
      * Mechanical energy 1/2 v^T M v + 1/2 u^T K u - f^T u (kinetic, elastic,
@@ -91,7 +92,7 @@ namespace rsfcycle
 
     /** Physical vertical displacement at the scene's observation points. */
     std::vector<double>
-    observed_uplift(const Vector<double> &u) const;
+    observed_uplift(const la::Vector &u) const;
 
     const std::vector<NodeInfo> &
     contact_nodes() const

@@ -19,7 +19,7 @@ namespace rsfcycle
       const std::function<Parameters(const Point<dim> &)> &parameters_at)
     {
       const auto                          &fe = dof_handler.get_fe();
-      Vector<double>                       weights(dof_handler.n_dofs());
+      la::Vector                           weights(dof_handler.n_dofs());
       const QTrapezoid<dim - 1>            trapezoid;
       FEFaceValues<dim>                    fe_face(fe,
                                 trapezoid,
@@ -93,7 +93,7 @@ namespace rsfcycle
 
     template <int dim>
     unsigned int
-    ContactQuadrature<dim>::set_normal_forces(const Vector<double> &reaction)
+    ContactQuadrature<dim>::set_normal_forces(const la::Vector &reaction)
     {
       unsigned int n_tensile = 0;
       double       total     = 0;
@@ -128,7 +128,7 @@ namespace rsfcycle
 
     template <int dim>
     std::vector<double>
-    ContactQuadrature<dim>::slip_rates(const Vector<double> &v) const
+    ContactQuadrature<dim>::slip_rates(const la::Vector &v) const
     {
       std::vector<double> rates(contact.nodes.size());
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
@@ -139,8 +139,7 @@ namespace rsfcycle
 
     template <int dim>
     std::vector<std::array<double, 2>>
-    ContactQuadrature<dim>::tangential_displacement(
-      const Vector<double> &u) const
+    ContactQuadrature<dim>::tangential_displacement(const la::Vector &u) const
     {
       std::vector<std::array<double, 2>> slip(contact.nodes.size(), {{0., 0.}});
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)

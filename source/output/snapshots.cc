@@ -97,11 +97,11 @@ namespace rsfcycle
 
 
     template <int dim>
-    std::vector<Vector<double>>
+    std::vector<la::Vector>
     SnapshotWriter<dim>::base_fields(const BodyState &state) const
     {
-      std::vector<Vector<double>> field(
-        n_fields, Vector<double>(discretisation.scalar_dof_handler.n_dofs()));
+      std::vector<la::Vector> field(
+        n_fields, la::Vector(discretisation.scalar_dof_handler.n_dofs()));
       field[log_slip_rate]            = std::log10(1e-20);
       const auto               &nodes = contact.nodes();
       const std::vector<double> rates = contact.slip_rates(state.v);
@@ -154,8 +154,8 @@ namespace rsfcycle
     void
     SnapshotWriter<dim>::write(const BodyState &state, const double t)
     {
-      const std::vector<Vector<double>> field = base_fields(state);
-      const auto &scalar_dofs = discretisation.scalar_dof_handler;
+      const std::vector<la::Vector> field = base_fields(state);
+      const auto &scalar_dofs             = discretisation.scalar_dof_handler;
 
       DataOut<dim> data_out;
       data_out.attach_dof_handler(discretisation.dof_handler);

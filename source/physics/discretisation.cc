@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/affine_constraints.templates.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <rsfcycle/ids.h>
@@ -87,7 +88,11 @@ namespace rsfcycle
       mass_matrix.reinit(sparsity_pattern);
       viscosity_matrix.reinit(sparsity_pattern);
       stiffness_matrix.reinit(sparsity_pattern);
-      body_force.reinit(dof_handler.n_dofs());
+      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+        dof_handler.locally_owned_dofs(),
+        DoFTools::extract_locally_relevant_dofs(dof_handler),
+        triangulation.get_communicator());
+      reinit(body_force);
       step_matrices.clear();
     }
 
@@ -227,11 +232,13 @@ namespace rsfcycle
                                                          dof_indices,
                                                          stiffness_matrix);
         }
+      mass_local.initialize(mass_matrix);
+      stiffness_local.initialize(stiffness_matrix);
     }
 
 
     template <int dim>
-    std::pair<Vector<double>, Vector<double>>
+    std::pair<la::Vector, la::Vector>
     Discretisation<dim>::gravity_equilibrium() const
     {
       for (const auto &[name, matrix] :
@@ -248,20 +255,28 @@ namespace rsfcycle
                                  "densities)");
       SparseMatrix<double> K(sparsity_pattern);
       K.copy_from(stiffness_matrix);
-      Vector<double> rhs(body_force);
+      la::Vector rhs(body_force);
       for (auto it = K.begin(); it != K.end(); ++it)
         if (fixed[it->row()] || fixed[it->column()])
           it->value() = (it->row() == it->column()) ? 1. : 0.;
       for (types::global_dof_index i = 0; i < rhs.size(); ++i)
         if (fixed[i])
           rhs[i] = 0;
-      Vector<double>      u(dof_handler.n_dofs());
+      // UMFPACK solves in place in a serial vector (one rank)
+      Vector<double> solution(rhs.size());
+      for (types::global_dof_index i = 0; i < rhs.size(); ++i)
+        solution[i] = rhs[i];
       SparseDirectUMFPACK direct;
       direct.initialize(K);
-      direct.vmult(u, rhs);
+      direct.solve(solution);
+      la::Vector u;
+      reinit(u);
+      for (types::global_dof_index i = 0; i < rhs.size(); ++i)
+        u[i] = solution[i];
       hanging_constraints.distribute(u);
 
-      Vector<double> reaction(dof_handler.n_dofs());
+      la::Vector reaction;
+      reinit(reaction);
       stiffness_matrix.vmult(reaction, u);
       reaction -= body_force;
       return {u, reaction};
@@ -270,8 +285,15 @@ namespace rsfcycle
 
     template <int dim>
     void
-    Discretisation<dim>::set_fixed_values(Vector<double> &v,
-                                          const double    t) const
+    Discretisation<dim>::reinit(la::Vector &v) const
+    {
+      v.reinit(partitioner);
+    }
+
+
+    template <int dim>
+    void
+    Discretisation<dim>::set_fixed_values(la::Vector &v, const double t) const
     {
       const Tensor<1, dim> velocity = scene.backstop_velocity(t);
       for (const auto &[dof, component] : backstop_dofs)
@@ -285,8 +307,8 @@ namespace rsfcycle
     Discretisation<dim>::step_matrix(const double tau, const bool dynamic)
     {
       for (auto &entry : step_matrices)
-        if (entry.first == tau)
-          return *entry.second;
+        if (entry.tau == tau)
+          return *entry.matrix;
       if (step_matrices.size() >= 4)
         step_matrices.erase(step_matrices.begin());
       auto A = std::make_unique<SparseMatrix<double>>(sparsity_pattern);
@@ -294,8 +316,25 @@ namespace rsfcycle
       A->add(tau / 2, stiffness_matrix);
       if (dynamic)
         A->add(2. / tau, mass_matrix);
-      step_matrices.emplace_back(tau, std::move(A));
-      return *step_matrices.back().second;
+      auto local = std::make_unique<la::LocalMatrix>(*A);
+      step_matrices.push_back({tau, std::move(A), std::move(local)});
+      return *step_matrices.back().matrix;
+    }
+
+
+    template <int dim>
+    const la::LocalMatrix &
+    Discretisation<dim>::local(const SparseMatrix<double> &matrix) const
+    {
+      if (&matrix == &mass_matrix)
+        return mass_local;
+      if (&matrix == &stiffness_matrix)
+        return stiffness_local;
+      for (const auto &entry : step_matrices)
+        if (entry.matrix.get() == &matrix)
+          return *entry.local;
+      throw std::logic_error("Discretisation::local: not a matrix of this "
+                             "discretisation");
     }
 
 

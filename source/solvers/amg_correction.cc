@@ -137,8 +137,8 @@ namespace rsfcycle
 
     unsigned int
     AMGCorrection::solve(const TruncatedNewtonSystem &system,
-                         const Vector<double>        &rhs,
-                         Vector<double>              &correction)
+                         const la::Vector            &rhs,
+                         la::Vector                  &correction)
     {
       Hierarchy &h = hierarchy(system);
       update(h, system);
@@ -146,9 +146,7 @@ namespace rsfcycle
         system,
         rhs,
         correction,
-        [&h](Vector<double> &dst, const Vector<double> &src) {
-          h.amg.vmult(dst, src);
-        },
+        [&h](la::Vector &dst, const la::Vector &src) { h.amg.vmult(dst, src); },
         control);
     }
   } // namespace solvers

@@ -106,8 +106,8 @@ namespace rsfcycle
 
     unsigned int
     DirectCorrection::solve(const TruncatedNewtonSystem &system,
-                            const Vector<double>        &rhs,
-                            Vector<double>              &c)
+                            const la::Vector            &rhs,
+                            la::Vector                  &c)
     {
       const Factorization        &f         = factorization(system);
       const SparseMatrix<double> &A         = *system.A;
@@ -124,8 +124,11 @@ namespace rsfcycle
 
       // y = A_II^{-1} b_I
       b_I.reinit(n_I, true);
+      // one rank: local entries are the global ones
+      const double *b = rhs.begin();
+      double       *x = c.begin();
       for (unsigned int k = 0; k < n_I; ++k)
-        b_I[k] = rhs[interior[k]];
+        b_I[k] = b[interior[k]];
       f.lu.solve(b_I, y);
 
       c = 0;
@@ -134,13 +137,13 @@ namespace rsfcycle
           // (S_aa + H_aa) x_a = b_a - A_aI y, with S_aa + H_aa formed
           // directly in the LAPACK matrix (n_a is small: contact dofs only)
           dealii::LAPACKFullMatrix<double> S(n_a, n_a);
-          Vector<double>                   x_a(n_a);
+          dealii::Vector<double>           x_a(n_a);
           std::vector<int> active_position(contact_dofs.size(), -1);
           for (unsigned int p = 0; p < n_a; ++p)
             {
               active_position[active[p]] = p;
               const global_dof_index row = contact_dofs[active[p]];
-              x_a[p]                     = rhs[row];
+              x_a[p]                     = b[row];
               for (auto it = A.begin(row); it != A.end(row); ++it)
                 if (interior_index[it->column()] >= 0)
                   x_a[p] -= it->value() * y[interior_index[it->column()]];
@@ -164,7 +167,7 @@ namespace rsfcycle
           S.compute_lu_factorization();
           S.solve(x_a);
           for (unsigned int p = 0; p < n_a; ++p)
-            c[contact_dofs[active[p]]] = x_a[p];
+            x[contact_dofs[active[p]]] = x_a[p];
 
           // x_I = A_II^{-1} (b_I - A_Ia x_a) = y - Z_a x_a
           for (unsigned int k = 0; k < n_I; ++k)
@@ -176,7 +179,7 @@ namespace rsfcycle
             }
         }
       for (unsigned int k = 0; k < n_I; ++k)
-        c[interior[k]] = y[k];
+        x[interior[k]] = y[k];
       return 1;
     }
   } // namespace solvers

@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/householder.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/multigrid/mg_coarse.h>
 #include <deal.II/multigrid/mg_matrix.h>
@@ -8,6 +10,7 @@
 #include <deal.II/multigrid/mg_tools.h>
 #include <deal.II/multigrid/multigrid.h>
 #include <map>
+#include <rsfcycle/solvers/local_sor.h>
 #include <rsfcycle/solvers/multigrid_correction.h>
 
 namespace rsfcycle
@@ -15,6 +18,38 @@ namespace rsfcycle
   namespace solvers
   {
     using namespace dealii;
+
+    namespace
+    {
+      /**
+       * The coarse level by Householder least squares (deal.II's
+       * MGCoarseGridHouseholder, which takes serial vectors only): the
+       * coarse level is whole on every rank.
+       */
+      class CoarseHouseholder : public MGCoarseGridBase<la::Vector>
+      {
+      public:
+        void
+        initialize(const FullMatrix<double> &matrix)
+        {
+          householder.initialize(matrix);
+        }
+
+        void
+        operator()(const unsigned int,
+                   la::Vector       &dst,
+                   const la::Vector &src) const override
+        {
+          Vector<double> b(src.begin(), src.end()), x(dst.size());
+          householder.least_squares(x, b);
+          std::copy(x.begin(), x.end(), dst.begin());
+        }
+
+      private:
+        Householder<double> householder;
+      };
+    } // namespace
+
 
     /**
      * The level step matrices of one matrix key and the multigrid objects
@@ -26,23 +61,24 @@ namespace rsfcycle
     {
       double                              key = 0;
       MGLevelObject<SparseMatrix<double>> matrices, interface;
+      /** The same, read in place by the cycle (distributed vectors). */
+      MGLevelObject<la::LocalMatrix> local_matrices, local_interface;
       /** Original diagonal blocks of the contact blocks, by level. */
       std::vector<std::vector<std::array<double, 4>>> original;
 
-      FullMatrix<double>                              coarse_matrix;
-      MGCoarseGridHouseholder<double, Vector<double>> coarse;
-      mg::Matrix<Vector<double>>                      mg_matrix;
-      mg::Matrix<Vector<double>>                      mg_interface_up;
-      mg::Matrix<Vector<double>>                      mg_interface_down;
-      using Smoother = PreconditionSOR<SparseMatrix<double>>;
+      FullMatrix<double>     coarse_matrix;
+      CoarseHouseholder      coarse;
+      mg::Matrix<la::Vector> mg_matrix;
+      mg::Matrix<la::Vector> mg_interface_up;
+      mg::Matrix<la::Vector> mg_interface_down;
+      using Smoother = LocalSOR;
       /** Forward Gauss-Seidel before, backward after: the V-cycle is
        * symmetric (needed by CG; alternating sweeps with an odd count of
        * them would not be). */
-      mg::SmootherRelaxation<Smoother, Vector<double>> pre_smoother,
-        post_smoother;
-      std::unique_ptr<Multigrid<Vector<double>>> multigrid;
+      mg::SmootherRelaxation<Smoother, la::Vector> pre_smoother, post_smoother;
+      std::unique_ptr<Multigrid<la::Vector>>       multigrid;
       std::unique_ptr<
-        PreconditionMG<dim, Vector<double>, MGTransferPrebuilt<Vector<double>>>>
+        PreconditionMG<dim, la::Vector, MGTransferPrebuilt<la::Vector>>>
         preconditioner;
     };
 
@@ -252,30 +288,35 @@ namespace rsfcycle
               ops->original[level].push_back(d);
             }
         }
-      ops->mg_matrix.initialize(ops->matrices);
-      ops->mg_interface_up.initialize(ops->interface);
-      ops->mg_interface_down.initialize(ops->interface);
+      ops->local_matrices.resize(0, n_level - 1);
+      ops->local_interface.resize(0, n_level - 1);
+      for (unsigned int level = 0; level < n_level; ++level)
+        {
+          ops->local_matrices[level].initialize(ops->matrices[level]);
+          ops->local_interface[level].initialize(ops->interface[level]);
+        }
+      ops->mg_matrix.initialize(ops->local_matrices);
+      ops->mg_interface_up.initialize(ops->local_interface);
+      ops->mg_interface_down.initialize(ops->local_interface);
       for (auto *smoother : {&ops->pre_smoother, &ops->post_smoother})
         {
           smoother->initialize(
-            ops->matrices,
+            ops->local_matrices,
             typename LevelOperators::Smoother::AdditionalData(1.0));
           smoother->set_steps(settings.smoothing_steps);
         }
       ops->post_smoother.set_transpose(true);
       ops->multigrid =
-        std::make_unique<Multigrid<Vector<double>>>(ops->mg_matrix,
-                                                    ops->coarse,
-                                                    transfer,
-                                                    ops->pre_smoother,
-                                                    ops->post_smoother);
+        std::make_unique<Multigrid<la::Vector>>(ops->mg_matrix,
+                                                ops->coarse,
+                                                transfer,
+                                                ops->pre_smoother,
+                                                ops->post_smoother);
       ops->multigrid->set_edge_matrices(ops->mg_interface_down,
                                         ops->mg_interface_up);
-      ops->preconditioner =
-        std::make_unique<PreconditionMG<dim,
-                                        Vector<double>,
-                                        MGTransferPrebuilt<Vector<double>>>>(
-          dof_handler, *ops->multigrid, transfer);
+      ops->preconditioner = std::make_unique<
+        PreconditionMG<dim, la::Vector, MGTransferPrebuilt<la::Vector>>>(
+        dof_handler, *ops->multigrid, transfer);
       cache.push_back(std::move(ops));
       return *cache.back();
     }
@@ -309,8 +350,8 @@ namespace rsfcycle
     template <int dim>
     unsigned int
     MultigridCorrection<dim>::solve(const TruncatedNewtonSystem &system,
-                                    const Vector<double>        &rhs,
-                                    Vector<double>              &correction)
+                                    const la::Vector            &rhs,
+                                    la::Vector                  &correction)
     {
       LevelOperators &ops = operators(system.matrix_key);
       update_contact_blocks(ops, system);
@@ -318,7 +359,7 @@ namespace rsfcycle
         system,
         rhs,
         correction,
-        [&ops](Vector<double> &dst, const Vector<double> &src) {
+        [&ops](la::Vector &dst, const la::Vector &src) {
           ops.preconditioner->vmult(dst, src);
         },
         settings.control);

@@ -9,10 +9,10 @@ namespace rsfcycle
 
     void
     truncated_newton_vmult(const TruncatedNewtonSystem &system,
-                           const Vector<double>        &x,
-                           Vector<double>              &y)
+                           const la::Vector            &x,
+                           la::Vector                  &y)
     {
-      system.A->vmult(y, x);
+      system.local_A->vmult(y, x);
       const ContactSet &contact = *system.contact;
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         {
@@ -31,23 +31,23 @@ namespace rsfcycle
 
     unsigned int
     ProjectedCG::solve(const TruncatedNewtonSystem   &system,
-                       const Vector<double>          &rhs,
-                       Vector<double>                &x,
+                       const la::Vector              &rhs,
+                       la::Vector                    &x,
                        const Preconditioner          &preconditioner,
                        const LinearCorrectionControl &control)
     {
       const std::vector<bool> &truncated = *system.truncated;
-      const auto               project   = [&](Vector<double> &w) {
+      const auto               project   = [&](la::Vector &w) {
         for (dealii::types::global_dof_index i = 0; i < w.size(); ++i)
           if (truncated[i])
             w[i] = 0;
       };
       if (r.size() != rhs.size())
         {
-          r.reinit(rhs.size());
-          z.reinit(rhs.size());
-          p.reinit(rhs.size());
-          q.reinit(rhs.size());
+          r.reinit(rhs);
+          z.reinit(rhs);
+          p.reinit(rhs);
+          q.reinit(rhs);
         }
       x = 0;
       r = rhs;

@@ -51,14 +51,17 @@ namespace rsfcycle
 
 
     void
-    TNNMG::gauss_seidel_sweep(const SpatialProblem &problem, Vector<double> &v)
+    TNNMG::gauss_seidel_sweep(const SpatialProblem &problem, la::Vector &v)
     {
-      const SparseMatrix<double> &A       = *problem.A;
-      const Vector<double>       &r       = *problem.rhs;
-      const std::vector<bool>    &fixed   = *problem.fixed;
-      const ContactSet           &contact = *problem.contact;
+      // rows and columns in the vectors' local numbering (the global one
+      // on one rank)
+      const la::LocalMatrix   &A       = *problem.local_A;
+      const double            *r       = problem.rhs->begin();
+      double                  *x       = v.begin();
+      const std::vector<bool> &fixed   = *problem.fixed;
+      const ContactSet        &contact = *problem.contact;
 
-      for (global_dof_index i = 0; i < v.size(); ++i)
+      for (unsigned int i = 0; i < A.m(); ++i)
         {
           if (fixed[i])
             continue;
@@ -67,12 +70,12 @@ namespace rsfcycle
             {
               // Linear Gauss-Seidel update of a dof without friction.
               double sum = r[i], diagonal = 0;
-              for (auto it = A.begin(i); it != A.end(i); ++it)
-                if (it->column() == i)
-                  diagonal = it->value();
+              for (unsigned int j = A.row_begin(i); j < A.row_end(i); ++j)
+                if (A.column(j) == i)
+                  diagonal = A.value(j);
                 else
-                  sum -= it->value() * v[it->column()];
-              v[i] = sum / diagonal;
+                  sum -= A.value(j) * x[A.column(j)];
+              x[i] = sum / diagonal;
               continue;
             }
 
@@ -89,18 +92,18 @@ namespace rsfcycle
             {
               const global_dof_index row = node.dofs[k];
               rho[k]                     = r[row];
-              for (auto it = A.begin(row); it != A.end(row); ++it)
+              for (unsigned int j = A.row_begin(row); j < A.row_end(row); ++j)
                 {
-                  const global_dof_index col      = it->column();
-                  bool                   in_block = false;
+                  const unsigned int col      = A.column(j);
+                  bool               in_block = false;
                   for (unsigned int l = 0; l < d; ++l)
                     if (col == node.dofs[l])
                       {
-                        A_TT[d * k + l] = it->value();
+                        A_TT[d * k + l] = A.value(j);
                         in_block        = true;
                       }
                   if (!in_block)
-                    rho[k] -= it->value() * v[col];
+                    rho[k] -= A.value(j) * x[col];
                 }
             }
 
@@ -109,21 +112,21 @@ namespace rsfcycle
           // the node's current value is the guess of the local solve
           if (d == 1)
             {
-              const std::array<double, 1> guess = {{v[node.dofs[0]]}};
+              const std::array<double, 1> guess = {{x[node.dofs[0]]}};
               const auto sol  = friction::solve_local_problem<1>({{A_TT[0]}},
                                                                 {{rho[0]}},
                                                                 phi,
                                                                 &guess);
-              v[node.dofs[0]] = sol.x[0];
+              x[node.dofs[0]] = sol.x[0];
             }
           else
             {
               const std::array<double, 2> guess = {
-                {v[node.dofs[0]], v[node.dofs[1]]}};
+                {x[node.dofs[0]], x[node.dofs[1]]}};
               const auto sol =
                 friction::solve_local_problem<2>(A_TT, rho, phi, &guess);
-              v[node.dofs[0]] = sol.x[0];
-              v[node.dofs[1]] = sol.x[1];
+              x[node.dofs[0]] = sol.x[0];
+              x[node.dofs[1]] = sol.x[1];
             }
         }
     }
@@ -143,11 +146,11 @@ namespace rsfcycle
      */
     double
     TNNMG::line_search(const SpatialProblem &problem,
-                       const Vector<double> &v,
-                       const Vector<double> &c)
+                       const la::Vector     &v,
+                       const la::Vector     &c)
     {
       const double c_residual = -(c * residual); // residual = r - A v
-      problem.A->vmult(Ac, c);
+      problem.local_A->vmult(Ac, c);
       const double      cAc     = c * Ac;
       const ContactSet &contact = *problem.contact;
 
@@ -217,14 +220,14 @@ namespace rsfcycle
 
     void
     TNNMG::truncate_and_linearise(const SpatialProblem &problem,
-                                  const Vector<double> &v)
+                                  const la::Vector     &v)
     {
       const SparseMatrix<double> &A       = *problem.A;
       const std::vector<bool>    &fixed   = *problem.fixed;
       const ContactSet           &contact = *problem.contact;
       const auto                 &phis    = *problem.potentials;
       const global_dof_index      n       = v.size();
-      A.residual(residual, v, *problem.rhs); // r - A v
+      problem.local_A->residual(residual, v, *problem.rhs); // r - A v
       for (global_dof_index i = 0; i < n; ++i)
         truncated[i] = fixed[i];
       newton_rhs = residual;
@@ -281,25 +284,25 @@ namespace rsfcycle
 
     TNNMGStatistics
     TNNMG::solve(const SpatialProblem &problem,
-                 Vector<double>       &v,
+                 la::Vector           &v,
                  const double          tolerance)
     {
       const SparseMatrix<double> &A       = *problem.A;
       const ContactSet           &contact = *problem.contact;
       const global_dof_index      n       = v.size();
 
-      residual.reinit(n);
-      newton_rhs.reinit(n);
-      correction_vector.reinit(n);
-      v_old.reinit(n);
-      increment.reinit(n);
-      Ac.reinit(n);
-      Av_old.reinit(n);
+      residual.reinit(v);
+      newton_rhs.reinit(v);
+      correction_vector.reinit(v);
+      v_old.reinit(v);
+      increment.reinit(v);
+      Ac.reinit(v);
+      Av_old.reinit(v);
       // A v is carried from iteration to iteration (the residual of step 2
       // and A c of the line search give it), so that the stopping test
       // costs no matrix product
-      Av.reinit(n);
-      A.vmult(Av, v);
+      Av.reinit(v);
+      problem.local_A->vmult(Av, v);
       truncated.assign(n, false);
       hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
 
@@ -327,6 +330,7 @@ namespace rsfcycle
           auto                  scope = section("TNNMG: linear correction");
           TruncatedNewtonSystem system;
           system.A             = &A;
+          system.local_A       = problem.local_A;
           system.contact       = &contact;
           system.node_hessians = &hessians;
           system.truncated     = &truncated;

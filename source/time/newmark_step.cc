@@ -27,21 +27,23 @@ namespace rsfcycle
 
 
     template <int dim>
-    Vector<double>
+    la::Vector
     NewmarkStep<dim>::right_hand_side(const BodyState &old,
                                       const double     tau) const
     {
-      Vector<double> rhs(discretisation.body_force), tmp(old.u);
+      la::Vector rhs(discretisation.body_force), tmp(old.u);
       tmp.add(tau / 2, old.v);
-      Vector<double> Ku(rhs.size());
-      discretisation.stiffness_matrix.vmult(Ku, tmp);
+      la::Vector Ku;
+      Ku.reinit(rhs);
+      discretisation.local(discretisation.stiffness_matrix).vmult(Ku, tmp);
       rhs -= Ku;
       if (solver.dynamics == "dynamic")
         {
           tmp = old.a;
           tmp.add(2. / tau, old.v);
-          Vector<double> Mv(rhs.size());
-          discretisation.mass_matrix.vmult(Mv, tmp);
+          la::Vector Mv;
+          Mv.reinit(rhs);
+          discretisation.local(discretisation.mass_matrix).vmult(Mv, tmp);
           rhs += Mv;
         }
       return rhs;
@@ -57,7 +59,7 @@ namespace rsfcycle
     {
       const SparseMatrix<double> &A =
         discretisation.step_matrix(tau, solver.dynamics == "dynamic");
-      const Vector<double> rhs = right_hand_side(old, tau);
+      const la::Vector rhs = right_hand_side(old, tau);
 
       BodyState next;
       next.v = guess ? guess->v : old.v;
@@ -68,6 +70,7 @@ namespace rsfcycle
         contact.potentials(cohesion);
       solvers::SpatialProblem problem;
       problem.A          = &A;
+      problem.local_A    = &discretisation.local(A);
       problem.rhs        = &rhs;
       problem.fixed      = &discretisation.fixed;
       problem.contact    = &contact.contact_set();
@@ -99,9 +102,9 @@ namespace rsfcycle
                              BodyState                            &next)
     {
       const unsigned int n_nodes      = contact.n_nodes();
-      const auto         update_state = [&](const Vector<double> &v_new,
-                                    const double          weight_new,
-                                    std::vector<double>  &alpha) {
+      const auto         update_state = [&](const la::Vector    &v_new,
+                                    const double         weight_new,
+                                    std::vector<double> &alpha) {
         std::optional<dealii::TimerOutput::Scope> scope;
         if (timer != nullptr)
           scope.emplace(*timer, "State update");
@@ -120,7 +123,7 @@ namespace rsfcycle
       double              d     = 0;
       std::string         why;
       const auto solve_velocity = [&](const std::vector<double> &alpha_k,
-                                      Vector<double>            &v) {
+                                      la::Vector                &v) {
         ++k;
         for (unsigned int i = 0; i < n_nodes; ++i)
           potentials[i].set_state(alpha_k[i]);
@@ -184,11 +187,11 @@ namespace rsfcycle
 
     template <int dim>
     void
-    NewmarkStep<dim>::update_states(const BodyState      &old,
-                                    const Vector<double> &v_new,
-                                    const double          weight_new,
-                                    const double          tau,
-                                    std::vector<double>  &alpha) const
+    NewmarkStep<dim>::update_states(const BodyState     &old,
+                                    const la::Vector    &v_new,
+                                    const double         weight_new,
+                                    const double         tau,
+                                    std::vector<double> &alpha) const
     {
       const auto &nodes = contact.contact_set().nodes;
       for (unsigned int k = 0; k < nodes.size(); ++k)
@@ -214,7 +217,7 @@ namespace rsfcycle
                                     const double                    t,
                                     const double                    tau,
                                     const unsigned int              k,
-                                    const Vector<double>           &v) const
+                                    const la::Vector               &v) const
     {
       std::ostringstream message;
       message << "t = " << t + tau << " s, step " << tau << " s: TNNMG "
@@ -232,7 +235,7 @@ namespace rsfcycle
     bool
     NewmarkStep<dim>::complete(const BodyState            &old,
                                const SparseMatrix<double> &A,
-                               const Vector<double>       &rhs,
+                               const la::Vector           &rhs,
                                const double                t,
                                const double                tau,
                                BodyState                  &next)
@@ -248,13 +251,14 @@ namespace rsfcycle
           next.a -= old.a;
         }
       else
-        next.a.reinit(old.a.size());
+        next.a.reinit(old.a);
 
       // Friction force per node from the equilibrium, r - A v (tangential).
       const auto        &nodes   = contact.contact_set().nodes;
       const unsigned int n_nodes = nodes.size();
-      Vector<double>     residual(rhs.size());
-      A.residual(residual, next.v, rhs);
+      la::Vector         residual;
+      residual.reinit(rhs);
+      discretisation.local(A).residual(residual, next.v, rhs);
       next.shear_traction.resize(n_nodes);
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
@@ -298,7 +302,7 @@ namespace rsfcycle
 
     template <int dim>
     std::string
-    NewmarkStep<dim>::first_non_finite(const Vector<double> &v) const
+    NewmarkStep<dim>::first_non_finite(const la::Vector &v) const
     {
       const auto &nodes = contact.contact_set().nodes;
       for (unsigned int k = 0; k < nodes.size(); ++k)

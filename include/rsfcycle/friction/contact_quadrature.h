@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 #include <functional>
 #include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/la.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <vector>
 
@@ -60,7 +61,7 @@ namespace rsfcycle
        * whose reaction has the opposite sign of the total (tensile).
        */
       unsigned int
-      set_normal_forces(const Vector<double> &reaction);
+      set_normal_forces(const la::Vector &reaction);
 
       /** The state distance (14) between two states. */
       double
@@ -69,11 +70,11 @@ namespace rsfcycle
 
       /** Slip rate |v_T| of every contact node. */
       std::vector<double>
-      slip_rates(const Vector<double> &v) const;
+      slip_rates(const la::Vector &v) const;
 
       /** Tangential displacement (up to 2 components) of every node. */
       std::vector<std::array<double, 2>>
-      tangential_displacement(const Vector<double> &u) const;
+      tangential_displacement(const la::Vector &u) const;
 
       /**
        * The node potentials phi_i of (13) with the state alpha not yet set;

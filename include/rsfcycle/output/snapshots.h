@@ -2,6 +2,7 @@
 #define rsfcycle_output_snapshots_h
 
 #include <rsfcycle/friction/contact_quadrature.h>
+#include <rsfcycle/la.h>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/time/newmark_step.h>
 #include <string>
@@ -55,7 +56,7 @@ namespace rsfcycle
       in_folder(const std::string &name) const;
 
       /** The friction fields on the base as scalar FE vectors. */
-      std::vector<Vector<double>>
+      std::vector<la::Vector>
       base_fields(const BodyState &state) const;
 
       const std::string                       dir;

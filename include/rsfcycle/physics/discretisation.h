@@ -14,6 +14,8 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
+#include <rsfcycle/la.h>
+#include <rsfcycle/local_matrix.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/scene.h>
 #include <utility>
@@ -85,12 +87,16 @@ namespace rsfcycle
        * K u - f (whose base normal components are the normal forces).
        * Throws if the matrices or the load are not finite.
        */
-      std::pair<Vector<double>, Vector<double>>
+      std::pair<la::Vector, la::Vector>
       gravity_equilibrium() const;
 
       /** Prescribed values of the fixed dofs at time t (backstop). */
+      /** v as a zero vector on the dofs' partitioner (owned, ghosts). */
       void
-      set_fixed_values(Vector<double> &v, double t) const;
+      reinit(la::Vector &v) const;
+
+      void
+      set_fixed_values(la::Vector &v, double t) const;
 
       /**
        * The step matrix A = 2/tau M + C + tau/2 K (quasi-static: without
@@ -98,6 +104,14 @@ namespace rsfcycle
        */
       const SparseMatrix<double> &
       step_matrix(double tau, bool dynamic);
+
+      /**
+       * The rank's rows of a matrix of this discretisation (mass,
+       * stiffness or a cached step matrix) for the kernels on distributed
+       * vectors.
+       */
+      const la::LocalMatrix &
+      local(const SparseMatrix<double> &matrix) const;
 
       /** For every FE dof, its vector component. */
       std::vector<unsigned int>
@@ -113,7 +127,9 @@ namespace rsfcycle
 
       SparsityPattern      sparsity_pattern;
       SparseMatrix<double> mass_matrix, viscosity_matrix, stiffness_matrix;
-      Vector<double>       body_force;
+      la::Vector           body_force;
+      /** Locally owned and locally relevant dofs of this rank. */
+      std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
       /** Dofs whose value is prescribed (Dirichlet, hanging nodes). */
       std::vector<bool> fixed;
@@ -122,11 +138,17 @@ namespace rsfcycle
         backstop_dofs;
 
     private:
+      la::LocalMatrix           mass_local, stiffness_local;
       const MeshParameters     &mesh;
       const scenes::Scene<dim> &scene;
 
-      std::vector<std::pair<double, std::unique_ptr<SparseMatrix<double>>>>
-        step_matrices;
+      struct StepMatrix
+      {
+        double                                tau;
+        std::unique_ptr<SparseMatrix<double>> matrix;
+        std::unique_ptr<la::LocalMatrix>      local;
+      };
+      std::vector<StepMatrix> step_matrices;
     };
   } // namespace physics
 } // namespace rsfcycle

@@ -2,6 +2,7 @@
 #define rsfcycle_solvers_amg_correction_h
 
 #include <memory>
+#include <rsfcycle/la.h>
 #include <rsfcycle/solvers/projected_cg.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <vector>
@@ -32,9 +33,9 @@ namespace rsfcycle
       ~AMGCorrection() override;
 
       unsigned int
-      solve(const TruncatedNewtonSystem  &system,
-            const dealii::Vector<double> &rhs,
-            dealii::Vector<double>       &correction) override;
+      solve(const TruncatedNewtonSystem &system,
+            const la::Vector            &rhs,
+            la::Vector                  &correction) override;
 
     private:
       struct Hierarchy;

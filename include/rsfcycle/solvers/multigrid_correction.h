@@ -12,6 +12,7 @@
 #include <deal.II/multigrid/mg_transfer.h>
 #include <functional>
 #include <memory>
+#include <rsfcycle/la.h>
 #include <rsfcycle/solvers/projected_cg.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <vector>
@@ -103,9 +104,9 @@ namespace rsfcycle
       ~MultigridCorrection() override;
 
       unsigned int
-      solve(const TruncatedNewtonSystem  &system,
-            const dealii::Vector<double> &rhs,
-            dealii::Vector<double>       &correction) override;
+      solve(const TruncatedNewtonSystem &system,
+            const la::Vector            &rhs,
+            la::Vector                  &correction) override;
 
       /** Number of levels and dofs per level (for logs). */
       std::vector<dealii::types::global_dof_index>
@@ -125,8 +126,8 @@ namespace rsfcycle
       Coefficients                   coefficients;
       Settings                       settings;
 
-      dealii::MGConstrainedDoFs                          mg_constrained_dofs;
-      dealii::MGTransferPrebuilt<dealii::Vector<double>> transfer;
+      dealii::MGConstrainedDoFs              mg_constrained_dofs;
+      dealii::MGTransferPrebuilt<la::Vector> transfer;
 
       dealii::MGLevelObject<dealii::SparsityPattern> patterns,
         interface_patterns;

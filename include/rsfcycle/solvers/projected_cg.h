@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/vector.h>
 #include <functional>
+#include <rsfcycle/la.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 
 namespace rsfcycle
@@ -51,9 +52,9 @@ namespace rsfcycle
      * (x must vanish on them): the operator of the truncated Newton system.
      */
     void
-    truncated_newton_vmult(const TruncatedNewtonSystem  &system,
-                           const dealii::Vector<double> &x,
-                           dealii::Vector<double>       &y);
+    truncated_newton_vmult(const TruncatedNewtonSystem &system,
+                           const la::Vector            &x,
+                           la::Vector                  &y);
 
     /**
      * Conjugate gradients for the truncated Newton system, restricted to the
@@ -68,19 +69,18 @@ namespace rsfcycle
     {
     public:
       using Preconditioner =
-        std::function<void(dealii::Vector<double> &,
-                           const dealii::Vector<double> &)>;
+        std::function<void(la::Vector &, const la::Vector &)>;
 
       /** Returns the number of preconditioner applications. */
       unsigned int
       solve(const TruncatedNewtonSystem   &system,
-            const dealii::Vector<double>  &rhs,
-            dealii::Vector<double>        &x,
+            const la::Vector              &rhs,
+            la::Vector                    &x,
             const Preconditioner          &preconditioner,
             const LinearCorrectionControl &control);
 
     private:
-      dealii::Vector<double> r, z, p, q;
+      la::Vector r, z, p, q;
     };
   } // namespace solvers
 } // namespace rsfcycle

@@ -7,6 +7,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/la.h>
+#include <rsfcycle/local_matrix.h>
 #include <vector>
 
 namespace rsfcycle
@@ -31,7 +33,7 @@ namespace rsfcycle
      * can be ~1e-160 m/s, whose square underflows).
      */
     inline double
-    tangential_norm(const ContactNode &node, const dealii::Vector<double> &v)
+    tangential_norm(const ContactNode &node, const la::Vector &v)
     {
       return node.n_dofs == 1 ? std::abs(v[node.dofs[0]]) :
                                 std::hypot(v[node.dofs[0]], v[node.dofs[1]]);
@@ -66,7 +68,8 @@ namespace rsfcycle
     struct SpatialProblem
     {
       const dealii::SparseMatrix<double>         *A          = nullptr;
-      const dealii::Vector<double>               *rhs        = nullptr;
+      const la::LocalMatrix                      *local_A    = nullptr;
+      const la::Vector                           *rhs        = nullptr;
       const std::vector<bool>                    *fixed      = nullptr;
       const ContactSet                           *contact    = nullptr;
       const std::vector<friction::NodePotential> *potentials = nullptr;
@@ -83,6 +86,7 @@ namespace rsfcycle
     struct TruncatedNewtonSystem
     {
       const dealii::SparseMatrix<double>       *A             = nullptr;
+      const la::LocalMatrix                    *local_A       = nullptr;
       const ContactSet                         *contact       = nullptr;
       const std::vector<std::array<double, 4>> *node_hessians = nullptr;
       const std::vector<bool>                  *truncated     = nullptr;
@@ -110,9 +114,9 @@ namespace rsfcycle
        * inner iterations (multigrid cycles; 1 for a direct solve).
        */
       virtual unsigned int
-      solve(const TruncatedNewtonSystem  &system,
-            const dealii::Vector<double> &rhs,
-            dealii::Vector<double>       &correction) = 0;
+      solve(const TruncatedNewtonSystem &system,
+            const la::Vector            &rhs,
+            la::Vector                  &correction) = 0;
     };
   } // namespace solvers
 } // namespace rsfcycle

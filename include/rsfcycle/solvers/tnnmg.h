@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 #include <memory>
 #include <optional>
+#include <rsfcycle/la.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <string>
 
@@ -53,9 +54,9 @@ namespace rsfcycle
        * Non-finite values give converged = false.
        */
       TNNMGStatistics
-      solve(const SpatialProblem   &problem,
-            dealii::Vector<double> &v,
-            const double            tolerance);
+      solve(const SpatialProblem &problem,
+            la::Vector           &v,
+            const double          tolerance);
 
       /**
        * One nonlinear block Gauss-Seidel sweep over all free dofs: a linear
@@ -63,8 +64,7 @@ namespace rsfcycle
        * solve for contact nodes (MODEL.md §4.2 step 1).
        */
       static void
-      gauss_seidel_sweep(const SpatialProblem   &problem,
-                         dealii::Vector<double> &v);
+      gauss_seidel_sweep(const SpatialProblem &problem, la::Vector &v);
 
       /**
        * Time the four steps of every iteration in these TimerOutput
@@ -81,24 +81,24 @@ namespace rsfcycle
        * the smoothed iterate v.
        */
       void
-      truncate_and_linearise(const SpatialProblem         &problem,
-                             const dealii::Vector<double> &v);
+      truncate_and_linearise(const SpatialProblem &problem,
+                             const la::Vector     &v);
 
       /** A timer section if a timer is attached. */
       std::optional<dealii::TimerOutput::Scope>
       section(const char *name) const;
 
       double
-      line_search(const SpatialProblem         &problem,
-                  const dealii::Vector<double> &v,
-                  const dealii::Vector<double> &c);
+      line_search(const SpatialProblem &problem,
+                  const la::Vector     &v,
+                  const la::Vector     &c);
 
       LinearCorrection    &correction;
       TNNMGControl         control;
       dealii::TimerOutput *timer = nullptr;
 
-      dealii::Vector<double> residual, increment, newton_rhs, correction_vector,
-        Ac, Av, Av_old, v_old;
+      la::Vector residual, increment, newton_rhs, correction_vector, Ac, Av,
+        Av_old, v_old;
       std::vector<bool>                  truncated;
       std::vector<std::array<double, 4>> hessians;
     };
@@ -122,9 +122,9 @@ namespace rsfcycle
       ~DirectCorrection() override;
 
       unsigned int
-      solve(const TruncatedNewtonSystem  &system,
-            const dealii::Vector<double> &rhs,
-            dealii::Vector<double>       &correction) override;
+      solve(const TruncatedNewtonSystem &system,
+            const la::Vector            &rhs,
+            la::Vector                  &correction) override;
 
     private:
       struct Factorization;

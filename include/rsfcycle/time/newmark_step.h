@@ -1,11 +1,14 @@
 #ifndef rsfcycle_time_newmark_step_h
 #define rsfcycle_time_newmark_step_h
 
+#include <boost/serialization/split_member.hpp>
+#include <boost/serialization/vector.hpp>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
 #include <optional>
 #include <rsfcycle/friction/contact_quadrature.h>
+#include <rsfcycle/la.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/solvers/tnnmg.h>
@@ -26,17 +29,32 @@ namespace rsfcycle
    */
   struct BodyState
   {
-    Vector<double>       u, v, a;
+    la::Vector           u, v, a;
     std::vector<double>  alpha;
     std::vector<double>  shear_traction; // |friction force| / w per node [Pa]
     time::StepStatistics statistics;
 
     template <class Archive>
     void
-    serialize(Archive &ar, const unsigned int)
+    save(Archive &ar, const unsigned int) const
     {
-      ar &u &v &a &alpha &shear_traction &statistics;
+      la::save(ar, u);
+      la::save(ar, v);
+      la::save(ar, a);
+      ar &alpha &shear_traction &statistics;
     }
+
+    template <class Archive>
+    void
+    load(Archive &ar, const unsigned int)
+    {
+      la::load(ar, u);
+      la::load(ar, v);
+      la::load(ar, a);
+      ar &alpha &shear_traction &statistics;
+    }
+
+    BOOST_SERIALIZATION_SPLIT_MEMBER()
   };
 
   namespace time
@@ -100,7 +118,7 @@ namespace rsfcycle
 
     private:
       /** r = f - K (u + tau/2 v) (+ M (2/tau v + a), dynamic). */
-      Vector<double>
+      la::Vector
       right_hand_side(const BodyState &old, double tau) const;
 
       /**
@@ -121,11 +139,11 @@ namespace rsfcycle
        * state, with the velocity (1 - weight_new) v_old + weight_new v_new.
        */
       void
-      update_states(const BodyState      &old,
-                    const Vector<double> &v_new,
-                    double                weight_new,
-                    double                tau,
-                    std::vector<double>  &alpha) const;
+      update_states(const BodyState     &old,
+                    const la::Vector    &v_new,
+                    double               weight_new,
+                    double               tau,
+                    std::vector<double> &alpha) const;
 
       /** The diagnosis of a TNNMG solve that failed. */
       std::string
@@ -133,20 +151,20 @@ namespace rsfcycle
                     double                          t,
                     double                          tau,
                     unsigned int                    k,
-                    const Vector<double>           &v) const;
+                    const la::Vector               &v) const;
 
       /** u, a, the shear traction and the finiteness checks of `next`. */
       bool
       complete(const BodyState            &old,
                const SparseMatrix<double> &A,
-               const Vector<double>       &rhs,
+               const la::Vector           &rhs,
                double                      t,
                double                      tau,
                BodyState                  &next);
 
       /** Where the first non-finite velocity is (for diagnoses). */
       std::string
-      first_non_finite(const Vector<double> &v) const;
+      first_non_finite(const la::Vector &v) const;
 
       const SolverParameters                           &solver;
       physics::Discretisation<dim>                     &discretisation;

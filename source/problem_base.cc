@@ -415,6 +415,8 @@ namespace rsfcycle
         h_max = std::max(h_max, cell->diameter());
       }
     log << "Cell diameters: " << h_min << " m to " << h_max << " m\n";
+    log << "Gravity equilibrium: CG with algebraic multigrid, "
+        << discretisation.gravity_iterations << " iterations\n";
     log << "Solver: " << parameters.solver.coupling << " coupling, "
         << parameters.solver.linear_correction << " linear correction, "
         << parameters.solver.state_law << " law, " << parameters.solver.dynamics

@@ -115,23 +115,29 @@ namespace rsfcycle
         h.amg.reinit();
       else
         {
-          TrilinosWrappers::PreconditionAMG::AdditionalData data;
-          data.elliptic              = true;
-          data.higher_order_elements = false;
-          data.smoother_sweeps       = 3;
-          data.aggregation_threshold = 1e-4;
-          // Elasticity: one constant (translation) mode per component.
-          unsigned int n_components = 0;
-          for (const unsigned int c : component_of_dof)
-            n_components = std::max(n_components, c + 1);
-          data.constant_modes.assign(n_components,
-                                     std::vector<bool>(component_of_dof.size(),
-                                                       false));
-          for (unsigned int i = 0; i < component_of_dof.size(); ++i)
-            data.constant_modes[component_of_dof[i]][i] = true;
-          h.amg.initialize(h.matrix, data);
+          h.amg.initialize(h.matrix, elasticity_amg_data(component_of_dof));
           h.initialized = true;
         }
+    }
+
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData
+    elasticity_amg_data(const std::vector<unsigned int> &component_of_dof)
+    {
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic              = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps       = 3;
+      data.aggregation_threshold = 1e-4;
+      unsigned int n_components  = 0;
+      for (const unsigned int c : component_of_dof)
+        n_components = std::max(n_components, c + 1);
+      data.constant_modes.assign(n_components,
+                                 std::vector<bool>(component_of_dof.size(),
+                                                   false));
+      for (unsigned int i = 0; i < component_of_dof.size(); ++i)
+        data.constant_modes[component_of_dof[i]][i] = true;
+      return data;
     }
 
 

@@ -88,7 +88,7 @@ namespace rsfcycle
        * Throws if the matrices or the load are not finite.
        */
       std::pair<la::Vector, la::Vector>
-      gravity_equilibrium() const;
+      gravity_equilibrium();
 
       /** Prescribed values of the fixed dofs at time t (backstop). */
       /** v as a zero vector on the dofs' partitioner (owned, ghosts). */
@@ -128,6 +128,8 @@ namespace rsfcycle
       SparsityPattern      sparsity_pattern;
       SparseMatrix<double> mass_matrix, viscosity_matrix, stiffness_matrix;
       la::Vector           body_force;
+      /** CG iterations of the last gravity equilibrium. */
+      unsigned int gravity_iterations = 0;
       /** Locally owned and locally relevant dofs of this rank. */
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 

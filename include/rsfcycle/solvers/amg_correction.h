@@ -1,6 +1,7 @@
 #ifndef rsfcycle_solvers_amg_correction_h
 #define rsfcycle_solvers_amg_correction_h
 
+#include <deal.II/lac/trilinos_precondition.h>
 #include <memory>
 #include <rsfcycle/la.h>
 #include <rsfcycle/solvers/projected_cg.h>
@@ -21,6 +22,14 @@ namespace rsfcycle
      * since), used as preconditioner of CG on the truncated system
      * (ProjectedCG), which sees the exact operator.
      */
+    /**
+     * Trilinos ML settings for an elasticity matrix: elliptic, one constant
+     * (translation) mode per displacement component (`component_of_dof`:
+     * the component of every dof).
+     */
+    dealii::TrilinosWrappers::PreconditionAMG::AdditionalData
+    elasticity_amg_data(const std::vector<unsigned int> &component_of_dof);
+
     class AMGCorrection : public LinearCorrection
     {
     public:

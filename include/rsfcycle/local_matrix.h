@@ -94,30 +94,14 @@ namespace rsfcycle
       void
       vmult(Vector &dst, const Vector &src) const
       {
-        const double *s = src.begin();
-        double       *d = dst.begin();
-        for (unsigned int row = 0; row < n_rows; ++row)
-          {
-            double sum = 0;
-            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-              sum += values[j] * s[colnums[j]];
-            d[row] = sum;
-          }
+        multiply<false>(dst, src);
       }
 
       /** dst += A src. */
       void
       vmult_add(Vector &dst, const Vector &src) const
       {
-        const double *s = src.begin();
-        double       *d = dst.begin();
-        for (unsigned int row = 0; row < n_rows; ++row)
-          {
-            double sum = 0;
-            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-              sum += values[j] * s[colnums[j]];
-            d[row] += sum;
-          }
+        multiply<true>(dst, src);
       }
 
       /** dst = A^T src (one rank: the ghost columns' sums stay local). */
@@ -139,8 +123,8 @@ namespace rsfcycle
             d[colnums[j]] += values[j] * s[row];
       }
 
-      /** dst = b - A x, row by row as deal.II's residual(); returns |dst|. */
-      double
+      /** dst = b - A x, row by row as deal.II's residual(). */
+      void
       residual(Vector &dst, const Vector &x, const Vector &b) const
       {
         const double *xs = x.begin();
@@ -151,7 +135,6 @@ namespace rsfcycle
               s -= values[j] * xs[colnums[j]];
             dst.local_element(row) = s;
           }
-        return dst.l2_norm();
       }
 
       /** v^T A v over all ranks. */
@@ -222,6 +205,22 @@ namespace rsfcycle
       }
 
     private:
+      /** dst = A src, or dst += A src. */
+      template <bool add>
+      void
+      multiply(Vector &dst, const Vector &src) const
+      {
+        const double *s = src.begin();
+        double       *d = dst.begin();
+        for (unsigned int row = 0; row < n_rows; ++row)
+          {
+            double sum = 0;
+            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
+              sum += values[j] * s[colnums[j]];
+            d[row] = add ? d[row] + sum : sum;
+          }
+      }
+
       void
       relax(Vector            &v,
             const Vector      &b,

@@ -40,13 +40,17 @@ namespace rsfcycle
                    la::Vector       &dst,
                    const la::Vector &src) const override
         {
-          Vector<double> b(src.begin(), src.end()), x(dst.size());
+          // buffers kept: the coarse solve runs in every V-cycle
+          b.reinit(src.size(), true);
+          x.reinit(dst.size(), true);
+          std::copy(src.begin(), src.end(), b.begin());
           householder.least_squares(x, b);
           std::copy(x.begin(), x.end(), dst.begin());
         }
 
       private:
-        Householder<double> householder;
+        Householder<double>    householder;
+        mutable Vector<double> b, x;
       };
     } // namespace
 

@@ -71,6 +71,17 @@ namespace
     std::filebuf             file;
   };
 
+  /** The log of the ranks other than the first: nothing is written. */
+  class NullBuffer : public std::streambuf
+  {
+  protected:
+    int
+    overflow(int c) override
+    {
+      return c == EOF ? !EOF : c;
+    }
+  };
+
   void
   print_help()
   {
@@ -194,20 +205,37 @@ namespace
       mpi.emplace(argc, argv, 1);
     else
       dealii::MultithreadInfo::set_thread_limit(1);
-    if (n_processes > 1)
+    if (n_processes > 1 && parameters.solver.linear_correction == "direct")
       throw std::invalid_argument(
-        "Scene = " + parameters.run.scene +
-        " runs on one MPI rank in this "
-        "version, not on " +
+        "Solver/Linear correction = direct runs on one MPI rank, not on " +
         std::to_string(n_processes) +
-        " (distributed meshes are being added): start it without mpirun");
+        ": choose multigrid or amg, or start it without mpirun");
+    // The first rank prepares the folder and writes the log; every rank
+    // learns whether the folder was refused.
+    const bool root = launched_processes().second == 0;
     if (!resume)
-      prepare_output_directory(parameters.run.output_directory,
-                               parameters.run.overwrite_output);
+      {
+        std::string refused;
+        if (root)
+          try
+            {
+              prepare_output_directory(parameters.run.output_directory,
+                                       parameters.run.overwrite_output);
+            }
+          catch (const std::invalid_argument &error)
+            {
+              refused = error.what();
+            }
+        if (mpi)
+          refused = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, refused);
+        if (!refused.empty())
+          throw std::invalid_argument(refused);
+      }
     LogBuffer    buffer(std::cout.rdbuf(),
                      parameters.run.output_directory + "/log.txt",
                      resume);
-    std::ostream log(&buffer);
+    NullBuffer   nothing;
+    std::ostream log(root ? static_cast<std::streambuf *>(&buffer) : &nothing);
     log.exceptions(std::ios::badbit);
     const bool completed = simulation->run(prm, log, resume);
     log.flush();

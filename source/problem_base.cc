@@ -36,6 +36,7 @@ namespace rsfcycle
     contact.setup(discretisation.dof_handler,
                   discretisation.scalar_dof_handler,
                   discretisation.hanging_constraints,
+                  *discretisation.partitioner,
                   discretisation.fixed,
                   [this](const Point<dim> &p) {
                     return scene.friction_parameters(p);
@@ -74,28 +75,39 @@ namespace rsfcycle
           dirichlet.push_back({boundary_id::lateral, ComponentMask(lateral)});
         }
 
-      // Contact node -> vertex and components.
-      std::map<types::global_dof_index, std::pair<unsigned int, unsigned int>>
-        vertex_of_dof;
+      // The contact nodes of all ranks, rank by rank: position, lumped
+      // weight and the components of their dofs.
+      const auto &partitioner = *discretisation.partitioner;
+      std::map<types::global_dof_index, unsigned int> component_of_dof;
       for (const auto &cell :
            discretisation.dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              cell->face(f)->boundary_id() == boundary_id::contact)
-            for (const unsigned int v : cell->face(f)->vertex_indices())
-              for (unsigned int c = 0; c < dim; ++c)
-                vertex_of_dof[cell->face(f)->vertex_dof_index(v, c)] = {
-                  cell->face(f)->vertex_index(v), c};
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == boundary_id::contact)
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                for (unsigned int c = 0; c < dim; ++c)
+                  component_of_dof[cell->face(f)->vertex_dof_index(v, c)] = c;
       const auto &nodes = contact.contact_set().nodes;
       std::vector<typename MG::ContactVertex> vertices(nodes.size());
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
-          vertices[k].vertex       = vertex_of_dof.at(nodes[k].dofs[0]).first;
+          vertices[k].position     = contact.nodes()[k].position;
           vertices[k].weight       = contact.nodes()[k].weight;
           vertices[k].n_components = nodes[k].n_dofs;
           for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
-            vertices[k].components[l] =
-              vertex_of_dof.at(nodes[k].dofs[l]).second;
+            vertices[k].components[l] = component_of_dof.at(
+              partitioner.local_to_global(nodes[k].dofs[l]));
+        }
+      if (Utilities::MPI::n_mpi_processes(partitioner.get_mpi_communicator()) >
+          1)
+        {
+          const auto parts =
+            Utilities::MPI::all_gather(partitioner.get_mpi_communicator(),
+                                       vertices);
+          vertices.clear();
+          for (const auto &part : parts)
+            vertices.insert(vertices.end(), part.begin(), part.end());
         }
 
       const auto       &fe = discretisation.fe;
@@ -121,6 +133,7 @@ namespace rsfcycle
                                      dirichlet,
                                      boundary_id::contact,
                                      vertices,
+                                     contact.first_global_node(),
                                      level_cell_matrices,
                                      coefficients,
                                      settings);
@@ -186,7 +199,11 @@ namespace rsfcycle
   }
 
 
-  /** Observation points: u . vertical as a weighted sum of dofs. */
+  /**
+   * Observation points: u . vertical as a weighted sum of dofs, on the rank
+   * that owns the cell around the point (on a rank boundary: each rank that
+   * finds the point in one of its cells; the values are averaged).
+   */
   template <int dim>
   void
   ProblemBase<dim>::setup_observation_points()
@@ -194,27 +211,46 @@ namespace rsfcycle
     const auto          &fe = discretisation.fe;
     const MappingQ1<dim> mapping;
     observation_weights.clear();
+    std::vector<double> found;
     for (const auto &[name, point] : scene.observation_points())
       {
-        const auto cell_and_point =
-          GridTools::find_active_cell_around_point(mapping,
-                                                   discretisation.dof_handler,
-                                                   point);
-        const Quadrature<dim> q(
-          GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
-        FEValues<dim> fe_values(mapping, fe, q, update_values);
-        fe_values.reinit(cell_and_point.first);
-        std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-        cell_and_point.first->get_dof_indices(indices);
         std::vector<std::pair<types::global_dof_index, double>> w;
-        const Tensor<1, dim> up = scene.vertical();
-        for (unsigned int i = 0; i < indices.size(); ++i)
+        // (on other ranks' parts of the mesh the search may find no cell)
+        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+          cell_and_point;
+        try
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            w.emplace_back(indices[i], fe_values.shape_value(i, 0) * up[c]);
+            cell_and_point = GridTools::find_active_cell_around_point(
+              mapping, discretisation.dof_handler, point);
           }
+        catch (const std::exception &)
+          {
+            cell_and_point.first = discretisation.dof_handler.end();
+          }
+        if (cell_and_point.first.state() == IteratorState::valid &&
+            cell_and_point.first->is_locally_owned())
+          {
+            const Quadrature<dim> q(
+              GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
+            FEValues<dim> fe_values(mapping, fe, q, update_values);
+            fe_values.reinit(cell_and_point.first);
+            std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+            cell_and_point.first->get_dof_indices(indices);
+            const Tensor<1, dim> up = scene.vertical();
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                w.emplace_back(discretisation.local_index(indices[i]),
+                               fe_values.shape_value(i, 0) * up[c]);
+              }
+          }
+        found.push_back(w.empty() ? 0. : 1.);
         observation_weights.push_back(w);
       }
+    observation_ranks.resize(found.size());
+    Utilities::MPI::sum(found,
+                        discretisation.triangulation.get_communicator(),
+                        observation_ranks);
   }
 
 
@@ -235,7 +271,8 @@ namespace rsfcycle
       setup_linear_correction();
     }
     setup_observation_points();
-    newmark = std::make_unique<time::NewmarkStep<dim>>(
+    la::load_partitioner() = discretisation.partitioner;
+    newmark                = std::make_unique<time::NewmarkStep<dim>>(
       parameters.solver,
       discretisation,
       contact,
@@ -255,10 +292,8 @@ namespace rsfcycle
   double
   ProblemBase<dim>::energy(const BodyState &state) const
   {
-    return 0.5 * discretisation.local(discretisation.mass_matrix)
-                   .matrix_norm_square(state.v) +
-           0.5 * discretisation.local(discretisation.stiffness_matrix)
-                   .matrix_norm_square(state.u) -
+    return 0.5 * discretisation.mass_local.matrix_norm_square(state.v) +
+           0.5 * discretisation.stiffness_local.matrix_norm_square(state.u) -
            discretisation.body_force * state.u;
   }
 
@@ -270,13 +305,19 @@ namespace rsfcycle
     // Hanging-node values are set in u (distribute), so the interpolation
     // may use any dof of the cell.
     std::vector<double> values;
+    const double       *entries = discretisation.stiffness_local.ghosted(u);
     for (const auto &w : observation_weights)
       {
         double value = 0;
-        for (const auto &[dof, weight] : w)
-          value += weight * u[dof];
+        for (const auto &[i, weight] : w)
+          value += weight * entries[i];
         values.push_back(value);
       }
+    Utilities::MPI::sum(values,
+                        discretisation.triangulation.get_communicator(),
+                        values);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      values[k] /= observation_ranks[k];
     return values;
   }
 
@@ -313,13 +354,16 @@ namespace rsfcycle
   time::Layout
   ProblemBase<dim>::layout() const
   {
-    time::Layout layout;
+    time::Layout        layout;
+    std::vector<double> s, z;
     for (const auto &node : contact.nodes())
       {
-        layout.positions.push_back(scene.along_base_coordinate(node.position));
-        if (dim == 3)
-          layout.lateral_positions.push_back(node.position[dim - 1]);
+        s.push_back(scene.along_base_coordinate(node.position));
+        z.push_back(node.position[dim - 1]);
       }
+    layout.positions = contact.gather(s);
+    if (dim == 3)
+      layout.lateral_positions = contact.gather(z);
     for (const auto &point : scene.observation_points())
       layout.observation_names.push_back(point.first + "_m");
     layout.convergence_rate = scene.convergence_rate();
@@ -332,8 +376,8 @@ namespace rsfcycle
   ProblemBase<dim>::sample(const BodyState &state) const
   {
     time::Sample sample;
-    sample.slip_rates   = contact.slip_rates(state.v);
-    sample.slip         = contact.tangential_displacement(state.u);
+    sample.slip_rates = contact.gather(contact.slip_rates(state.v));
+    sample.slip = contact.gather(contact.tangential_displacement(state.u));
     sample.observations = observed_uplift(state.u);
     sample.statistics   = state.statistics;
     return sample;
@@ -360,8 +404,11 @@ namespace rsfcycle
   output::CheckpointIdentity
   ProblemBase<dim>::checkpoint_identity() const
   {
-    // serial: one rank
-    return {parameters.run.scene, dim, discretisation.dof_handler.n_dofs(), 1};
+    return {parameters.run.scene,
+            dim,
+            discretisation.dof_handler.n_dofs(),
+            Utilities::MPI::n_mpi_processes(
+              discretisation.triangulation.get_communicator())};
   }
 
 
@@ -404,16 +451,23 @@ namespace rsfcycle
   {
     const auto &tria = discretisation.triangulation;
     log << "Scene: " << parameters.run.scene << " (" << dim << "D)\n"
-        << "Mesh: " << tria.n_active_cells() << " cells, "
+        << "Mesh: " << tria.n_global_active_cells() << " cells, "
         << tria.n_global_levels() << " levels, "
         << discretisation.dof_handler.n_dofs() << " unknowns, "
-        << contact.n_nodes() << " contact nodes\n";
+        << contact.n_global_nodes() << " contact nodes\n";
     double h_min = 1e300, h_max = 0;
     for (const auto &cell : tria.active_cell_iterators())
-      {
-        h_min = std::min(h_min, cell->diameter());
-        h_max = std::max(h_max, cell->diameter());
-      }
+      if (cell->is_locally_owned())
+        {
+          h_min = std::min(h_min, cell->diameter());
+          h_max = std::max(h_max, cell->diameter());
+        }
+    h_min = Utilities::MPI::min(h_min, tria.get_communicator());
+    h_max = Utilities::MPI::max(h_max, tria.get_communicator());
+    if (const unsigned int n_ranks =
+          Utilities::MPI::n_mpi_processes(tria.get_communicator());
+        n_ranks > 1)
+      log << "MPI ranks: " << n_ranks << "\n";
     log << "Cell diameters: " << h_min << " m to " << h_max << " m\n";
     log << "Gravity equilibrium: CG with algebraic multigrid, "
         << discretisation.gravity_iterations << " iterations\n";

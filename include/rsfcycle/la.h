@@ -3,8 +3,12 @@
 
 #include <algorithm>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace rsfcycle
@@ -23,11 +27,21 @@ namespace rsfcycle
     using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
     /**
+     * The layout that loaded vectors get (set by the model before a
+     * checkpoint is read): its owned entries must be as many as were saved.
+     */
+    inline std::shared_ptr<const dealii::Utilities::MPI::Partitioner> &
+    load_partitioner()
+    {
+      static std::shared_ptr<const dealii::Utilities::MPI::Partitioner> p;
+      return p;
+    }
+
+    /**
      * Boost serialization of a vector's locally owned entries (deal.II's
      * distributed vector has none: its base class's serialize() writes
-     * nothing). Loading gives a vector of as many entries on this rank
-     * alone; the model moves it onto its partitioner (one rank: the same
-     * layout).
+     * nothing). Loading puts them on load_partitioner() (or, if none is
+     * set, on a vector of this rank alone).
      */
     template <class Archive>
     void
@@ -43,7 +57,16 @@ namespace rsfcycle
     {
       std::vector<double> values;
       ar                 &values;
-      v.reinit(values.size());
+      const auto         &partitioner = load_partitioner();
+      if (partitioner && partitioner->locally_owned_size() == values.size())
+        v.reinit(partitioner);
+      else if (partitioner)
+        throw std::invalid_argument(
+          "checkpoint: " + std::to_string(values.size()) +
+          " entries of a vector where this rank owns " +
+          std::to_string(partitioner->locally_owned_size()));
+      else
+        v.reinit(values.size());
       std::copy(values.begin(), values.end(), v.begin());
     }
 

@@ -1,8 +1,11 @@
 #ifndef rsfcycle_local_matrix_h
 #define rsfcycle_local_matrix_h
 
-#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <memory>
 #include <rsfcycle/la.h>
+#include <utility>
 #include <vector>
 
 namespace rsfcycle
@@ -11,55 +14,55 @@ namespace rsfcycle
   {
     /**
      * A rank's rows of a square sparse matrix in compressed rows, columns
-     * in the vectors' local numbering (owned entries first, ghosts after),
-     * reading the values of a deal.II SparseMatrix in place (so entries
-     * changed with set() are seen; the matrix must not be reinitialised
-     * while the view lives). The products, the residual and the SOR
-     * relaxations that the multigrid cycle, TNNMG and the Newmark step run
-     * on distributed vectors, by raw index instead of the global-index
-     * access of deal.II's templates for distributed vectors. On one rank
-     * local numbering is the global one. The diagonal is the first entry of
-     * every row (deal.II's SparsityPattern of a square matrix).
+     * in the local numbering of a partitioner (owned entries first, ghosts
+     * after), the diagonal first in every row. The products, the residual
+     * and the SOR relaxations that the multigrid cycle, TNNMG and the
+     * Newmark step run on distributed vectors, by raw index instead of the
+     * global-index access of deal.II's templates for distributed vectors.
+     *
+     * Ghosts. A kernel that reads other ranks' entries of its argument
+     * first brings them in: a vector on the matrix's own partitioner gets
+     * update_ghost_values(); a vector on another partitioner with the same
+     * owned range (the multigrid transfer makes the level vectors) is
+     * copied into a buffer on the matrix's partitioner. The relaxations are
+     * processor-local: a sweep reads the other ranks' entries as they were
+     * at its start (hybrid Gauss-Seidel/Jacobi); products with the
+     * transpose send their contributions to the owners (compress). On one
+     * rank there are no ghosts and the kernels read the vectors directly.
      */
     class LocalMatrix
     {
     public:
       LocalMatrix() = default;
 
-      explicit LocalMatrix(const dealii::SparseMatrix<double> &A)
+      /**
+       * The owned rows of a Trilinos matrix whose row range is the
+       * partitioner's owned range; every column must be an owned or ghost
+       * index of the partitioner.
+       */
+      LocalMatrix(
+        const dealii::TrilinosWrappers::SparseMatrix &A,
+        const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+          &partitioner)
       {
-        initialize(A);
+        initialize(A, partitioner);
       }
 
       void
-      initialize(const dealii::SparseMatrix<double> &A)
-      {
-        const auto &pattern = A.get_sparsity_pattern();
-        n_rows              = A.m();
-        rowstart.assign(1, 0);
-        colnums.clear();
-        for (unsigned int row = 0; row < n_rows; ++row)
-          {
-            for (auto it = pattern.begin(row); it != pattern.end(row); ++it)
-              colnums.push_back(it->column());
-            rowstart.push_back(colnums.size());
-          }
-        // the value array starts with the first row's diagonal (deal.II
-        // returns it by reference only from a non-const matrix)
-        values =
-          n_rows > 0 ?
-            &const_cast<dealii::SparseMatrix<double> &>(A).diag_element(0) :
-            nullptr;
-      }
+      initialize(
+        const dealii::TrilinosWrappers::SparseMatrix &A,
+        const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+          &partitioner);
+
+      /**
+       * The same sparsity as `terms` (all of one pattern), with the values
+       * sum_k c_k B_k.
+       */
+      void
+      combine(const std::vector<std::pair<double, const LocalMatrix *>> &terms);
 
       unsigned int
       m() const
-      {
-        return n_rows;
-      }
-
-      unsigned int
-      n() const
       {
         return n_rows;
       }
@@ -90,7 +93,36 @@ namespace rsfcycle
         return values[j];
       }
 
-      /** dst = A src (src with current ghost values). */
+      double
+      diagonal(const unsigned int row) const
+      {
+        return values[rowstart[row]];
+      }
+
+      /** The entry (row, column) in local numbering; it must exist. */
+      double &
+      entry(unsigned int row, unsigned int column);
+
+      double
+      el(const unsigned int row, const unsigned int column) const
+      {
+        return const_cast<LocalMatrix *>(this)->entry(row, column);
+      }
+
+      const std::shared_ptr<const dealii::Utilities::MPI::Partitioner> &
+      get_partitioner() const
+      {
+        return partitioner;
+      }
+
+      /** Global index of a local column. */
+      dealii::types::global_dof_index
+      global_column(const unsigned int column) const
+      {
+        return partitioner->local_to_global(column);
+      }
+
+      /** dst = A src. */
       void
       vmult(Vector &dst, const Vector &src) const
       {
@@ -104,7 +136,7 @@ namespace rsfcycle
         multiply<true>(dst, src);
       }
 
-      /** dst = A^T src (one rank: the ghost columns' sums stay local). */
+      /** dst = A^T src. */
       void
       Tvmult(Vector &dst, const Vector &src) const
       {
@@ -114,103 +146,55 @@ namespace rsfcycle
 
       /** dst += A^T src. */
       void
-      Tvmult_add(Vector &dst, const Vector &src) const
-      {
-        const double *s = src.begin();
-        double       *d = dst.begin();
-        for (unsigned int row = 0; row < n_rows; ++row)
-          for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-            d[colnums[j]] += values[j] * s[row];
-      }
+      Tvmult_add(Vector &dst, const Vector &src) const;
 
-      /** dst = b - A x, row by row as deal.II's residual(). */
+      /** dst = b - A x. */
       void
-      residual(Vector &dst, const Vector &x, const Vector &b) const
-      {
-        const double *xs = x.begin();
-        for (unsigned int row = 0; row < n_rows; ++row)
-          {
-            double s = b.local_element(row);
-            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-              s -= values[j] * xs[colnums[j]];
-            dst.local_element(row) = s;
-          }
-      }
+      residual(Vector &dst, const Vector &x, const Vector &b) const;
 
       /** v^T A v over all ranks. */
       double
-      matrix_norm_square(const Vector &v) const
-      {
-        const double *x   = v.begin();
-        double        sum = 0;
-        for (unsigned int row = 0; row < n_rows; ++row)
-          {
-            double s = 0;
-            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-              s += values[j] * x[colnums[j]];
-            sum += s * x[row];
-          }
-        return dealii::Utilities::MPI::sum(
-          sum, v.get_partitioner()->get_mpi_communicator());
-      }
+      matrix_norm_square(const Vector &v) const;
 
-      /** dst = (D/omega + L)^{-1} src (deal.II's precondition_SOR). */
+      /**
+       * dst = (D/omega + L)^{-1} src (deal.II's precondition_SOR) with the
+       * rank's block of L.
+       */
       void
-      precondition_SOR(Vector &dst, const Vector &src, const double omega) const
-      {
-        dst       = src;
-        double *d = dst.begin();
-        for (unsigned int row = 0; row < n_rows; ++row)
-          {
-            double s = d[row];
-            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-              if (colnums[j] < row)
-                s -= values[j] * d[colnums[j]];
-            d[row] = s * omega / values[rowstart[row]];
-          }
-      }
+      precondition_SOR(Vector &dst, const Vector &src, double omega) const;
 
-      /** dst = (D/omega + U)^{-1} src (deal.II's precondition_TSOR). */
+      /** dst = (D/omega + U)^{-1} src with the rank's block of U. */
       void
-      precondition_TSOR(Vector       &dst,
-                        const Vector &src,
-                        const double  omega) const
-      {
-        dst       = src;
-        double *d = dst.begin();
-        for (unsigned int row = n_rows; row-- > 0;)
-          {
-            double s = d[row];
-            for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-              if (colnums[j] > row)
-                s -= values[j] * d[colnums[j]];
-            d[row] = s * omega / values[rowstart[row]];
-          }
-      }
+      precondition_TSOR(Vector &dst, const Vector &src, double omega) const;
 
       /** One forward sweep v += omega D^{-1} (b - A v) (SOR_step). */
       void
-      SOR_step(Vector &v, const Vector &b, const double omega) const
+      SOR_step(Vector &v, const Vector &b, double omega) const
       {
-        for (unsigned int row = 0; row < n_rows; ++row)
-          relax(v, b, row, omega);
+        sweep<true>(v, b, omega);
       }
 
       /** One backward sweep (TSOR_step). */
       void
-      TSOR_step(Vector &v, const Vector &b, const double omega) const
+      TSOR_step(Vector &v, const Vector &b, double omega) const
       {
-        for (unsigned int row = n_rows; row-- > 0;)
-          relax(v, b, row, omega);
+        sweep<false>(v, b, omega);
       }
 
+      /**
+       * The entries of v on this matrix's partitioner, ghosts current:
+       * v's own storage if it is on this partitioner (after
+       * update_ghost_values) or has no ghosts to read, else a buffer.
+       */
+      const double *
+      ghosted(const Vector &v) const;
+
     private:
-      /** dst = A src, or dst += A src. */
       template <bool add>
       void
       multiply(Vector &dst, const Vector &src) const
       {
-        const double *s = src.begin();
+        const double *s = ghosted(src);
         double       *d = dst.begin();
         for (unsigned int row = 0; row < n_rows; ++row)
           {
@@ -221,23 +205,16 @@ namespace rsfcycle
           }
       }
 
+      template <bool forward>
       void
-      relax(Vector            &v,
-            const Vector      &b,
-            const unsigned int row,
-            const double       omega) const
-      {
-        double *x = v.begin();
-        double  s = b.local_element(row);
-        for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
-          s -= values[j] * x[colnums[j]];
-        x[row] += s * omega / values[rowstart[row]];
-      }
+      sweep(Vector &v, const Vector &b, double omega) const;
 
-      unsigned int              n_rows = 0;
-      std::vector<unsigned int> rowstart;
-      std::vector<unsigned int> colnums;
-      const double             *values = nullptr;
+      unsigned int                                               n_rows = 0;
+      std::vector<unsigned int>                                  rowstart;
+      std::vector<unsigned int>                                  colnums;
+      std::vector<double>                                        values;
+      std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
+      mutable Vector                                             buffer;
     };
   } // namespace la
 } // namespace rsfcycle

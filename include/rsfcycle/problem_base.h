@@ -176,8 +176,11 @@ namespace rsfcycle
     unsigned int n_tensile_nodes = 0;
 
     /** Observation points: dof indices and weights of u . vertical. */
+    /** Per observation point: (local index, weight) on the owning rank. */
     std::vector<std::vector<std::pair<types::global_dof_index, double>>>
       observation_weights;
+    /** Per observation point: on how many ranks it was found. */
+    std::vector<double> observation_ranks;
   };
 } // namespace rsfcycle
 

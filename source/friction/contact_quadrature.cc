@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -15,16 +16,22 @@ namespace rsfcycle
       const DoFHandler<dim>                               &dof_handler,
       const DoFHandler<dim>                               &scalar_dof_handler,
       const AffineConstraints<double>                     &hanging_constraints,
+      const Utilities::MPI::Partitioner                   &partitioner,
       const std::vector<bool>                             &fixed,
       const std::function<Parameters(const Point<dim> &)> &parameters_at)
     {
-      const auto                          &fe = dof_handler.get_fe();
-      la::Vector                           weights(dof_handler.n_dofs());
-      const QTrapezoid<dim - 1>            trapezoid;
-      FEFaceValues<dim>                    fe_face(fe,
+      communicator = partitioner.get_mpi_communicator();
+      n_ranks      = Utilities::MPI::n_mpi_processes(communicator);
+      const auto               &fe = dof_handler.get_fe();
+      la::Vector                weights(partitioner.locally_owned_range(),
+                         partitioner.ghost_indices(),
+                         communicator);
+      const QTrapezoid<dim - 1> trapezoid;
+      FEFaceValues<dim>         fe_face(fe,
                                 trapezoid,
                                 update_values | update_JxW_values);
       std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+      Vector<double>                       cell_weights(fe.n_dofs_per_cell());
       struct BaseVertex
       {
         Point<dim>              position;
@@ -32,33 +39,48 @@ namespace rsfcycle
       };
       std::map<types::global_dof_index, BaseVertex> base_vertices; // by x dof
 
+      // The rank's base vertices (from its cells and their ghost
+      // neighbours); the weights from its own cells, summed over ranks and
+      // condensed onto the masters of hanging nodes.
       for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          {
-            const auto face = cell->face(f);
-            if (!face->at_boundary() ||
-                face->boundary_id() != boundary_id::contact)
-              continue;
-            const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
-              &dof_handler.get_triangulation(),
-              cell->level(),
-              cell->index(),
-              &scalar_dof_handler);
-            for (const unsigned int v : face->vertex_indices())
-              base_vertices[face->vertex_dof_index(v, 0)] = {
-                face->vertex(v),
-                scalar_cell->face(f)->vertex_dof_index(v, 0),
-                face->vertex_dof_index(v, 1),
-                face->vertex_dof_index(v, dim - 1)};
-            fe_face.reinit(cell, f);
-            cell->get_dof_indices(dof_indices);
-            for (const unsigned int i : fe_face.dof_indices())
-              if (fe.system_to_component_index(i).first == 0)
-                for (const unsigned int q : fe_face.quadrature_point_indices())
-                  weights[dof_indices[i]] +=
-                    fe_face.shape_value_component(i, q, 0) * fe_face.JxW(q);
-          }
-      hanging_constraints.condense(weights);
+        {
+          if (cell->is_artificial())
+            continue;
+          for (const unsigned int f : cell->face_indices())
+            {
+              const auto face = cell->face(f);
+              if (!face->at_boundary() ||
+                  face->boundary_id() != boundary_id::contact)
+                continue;
+              const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
+                &dof_handler.get_triangulation(),
+                cell->level(),
+                cell->index(),
+                &scalar_dof_handler);
+              for (const unsigned int v : face->vertex_indices())
+                if (partitioner.in_local_range(face->vertex_dof_index(v, 0)))
+                  base_vertices[face->vertex_dof_index(v, 0)] = {
+                    face->vertex(v),
+                    scalar_cell->face(f)->vertex_dof_index(v, 0),
+                    face->vertex_dof_index(v, 1),
+                    face->vertex_dof_index(v, dim - 1)};
+              if (!cell->is_locally_owned())
+                continue;
+              fe_face.reinit(cell, f);
+              cell->get_dof_indices(dof_indices);
+              cell_weights = 0;
+              for (const unsigned int i : fe_face.dof_indices())
+                if (fe.system_to_component_index(i).first == 0)
+                  for (const unsigned int q :
+                       fe_face.quadrature_point_indices())
+                    cell_weights(i) +=
+                      fe_face.shape_value_component(i, q, 0) * fe_face.JxW(q);
+              hanging_constraints.distribute_local_to_global(cell_weights,
+                                                             dof_indices,
+                                                             weights);
+            }
+        }
+      weights.compress(VectorOperation::add);
 
       // Contact nodes: base vertices with a free tangential component.
       contact.nodes.clear();
@@ -73,21 +95,53 @@ namespace rsfcycle
           if (dim == 3)
             tangential.push_back(vertex.lateral_dof);
           for (const auto dof : tangential)
-            if (!fixed[dof])
-              node.dofs[node.n_dofs++] = dof;
+            if (!fixed[partitioner.global_to_local(dof)])
+              node.dofs[node.n_dofs++] = partitioner.global_to_local(dof);
           if (node.n_dofs == 0)
             continue;
           NodeInfo info;
           info.position   = vertex.position;
-          info.weight     = weights[x_dof];
+          info.weight     = weights(x_dof);
           info.params     = parameters_at(vertex.position);
           info.scalar_dof = vertex.scalar_dof;
-          info.normal_dof = vertex.normal_dof;
+          info.normal_dof = partitioner.global_to_local(vertex.normal_dof);
           contact.nodes.push_back(node);
           node_info.push_back(info);
           area += info.weight;
         }
-      contact.build_index(dof_handler.n_dofs());
+      area = Utilities::MPI::sum(area, communicator);
+      contact.build_index(partitioner.locally_owned_size() +
+                          partitioner.n_ghost_indices());
+
+      // The order of all nodes by position, the same on every rank.
+      std::vector<Point<dim>> positions;
+      for (const auto &info : node_info)
+        positions.push_back(info.position);
+      first_node                  = 0;
+      std::vector<Point<dim>> all = positions;
+      if (n_ranks > 1)
+        {
+          const auto parts =
+            Utilities::MPI::all_gather(communicator, positions);
+          all.clear();
+          for (unsigned int r = 0; r < parts.size(); ++r)
+            {
+              if (r == Utilities::MPI::this_mpi_process(communicator))
+                first_node = all.size();
+              all.insert(all.end(), parts[r].begin(), parts[r].end());
+            }
+        }
+      order.resize(all.size());
+      for (unsigned int k = 0; k < order.size(); ++k)
+        order[k] = k;
+      std::sort(order.begin(),
+                order.end(),
+                [&all](const unsigned int i, const unsigned int j) {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    if (all[i][d] != all[j][d])
+                      return all[i][d] < all[j][d];
+                  return false;
+                });
     }
 
 
@@ -98,15 +152,16 @@ namespace rsfcycle
       unsigned int n_tensile = 0;
       double       total     = 0;
       for (const auto &info : node_info)
-        total += reaction[info.normal_dof];
+        total += reaction.local_element(info.normal_dof);
+      total = Utilities::MPI::sum(total, communicator);
       for (auto &info : node_info)
         {
-          const double r    = reaction[info.normal_dof];
+          const double r    = reaction.local_element(info.normal_dof);
           info.normal_force = std::abs(r);
           if (r * total < 0)
             ++n_tensile;
         }
-      return n_tensile;
+      return Utilities::MPI::sum(n_tensile, communicator);
     }
 
 
@@ -122,6 +177,8 @@ namespace rsfcycle
           const double d = alpha1[k] - alpha2[k];
           sum += node_info[k].weight * d * d;
         }
+      if (n_ranks > 1)
+        sum = Utilities::MPI::sum(sum, communicator);
       return std::sqrt(sum / area);
     }
 
@@ -144,7 +201,7 @@ namespace rsfcycle
       std::vector<std::array<double, 2>> slip(contact.nodes.size(), {{0., 0.}});
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         for (unsigned int l = 0; l < contact.nodes[k].n_dofs; ++l)
-          slip[k][l] = u[contact.nodes[k].dofs[l]];
+          slip[k][l] = u.local_element(contact.nodes[k].dofs[l]);
       return slip;
     }
 

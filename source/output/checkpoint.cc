@@ -1,6 +1,7 @@
 #include <boost/crc.hpp>
 #include <cerrno>
 #include <cstdio>
+#include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <fstream>
 #include <rsfcycle/output/checkpoint.h>
@@ -219,6 +220,129 @@ namespace rsfcycle
     } // namespace
 
 
+    namespace
+    {
+      MPI_Comm
+      world()
+      {
+        return MPI_COMM_WORLD;
+      }
+
+      /** The number of MPI ranks (1 if MPI is not started). */
+      unsigned int
+      n_ranks()
+      {
+        int started = 0;
+        MPI_Initialized(&started);
+        return started ? dealii::Utilities::MPI::n_mpi_processes(world()) : 1;
+      }
+
+      /**
+       * The payload of N > 1 ranks: per rank its size (8 bytes, little
+       * endian) and its bytes.
+       */
+      std::string
+      join(const std::vector<std::string> &parts)
+      {
+        std::string joined;
+        for (const auto &part : parts)
+          {
+            std::string size(8, '\0');
+            for (unsigned int b = 0; b < 8; ++b)
+              size[b] = static_cast<char>((part.size() >> (8 * b)) & 0xff);
+            joined += size + part;
+          }
+        return joined;
+      }
+
+      std::vector<std::string>
+      split(const std::string &joined)
+      {
+        std::vector<std::string> parts;
+        std::size_t              at = 0;
+        while (at + 8 <= joined.size())
+          {
+            std::uint64_t size = 0;
+            for (unsigned int b = 0; b < 8; ++b)
+              size |= std::uint64_t(static_cast<unsigned char>(joined[at + b]))
+                      << (8 * b);
+            parts.push_back(joined.substr(at + 8, size));
+            at += 8 + size;
+          }
+        return parts;
+      }
+
+      /** Write the file (first rank); a failure as its message. */
+      std::string
+      write_file_with_backup(const std::string &dir, const std::string &file)
+      {
+        const std::string bin = dir + "/checkpoint.bin", prev = bin + ".prev",
+                          tmp = dir + "/checkpoint.tmp";
+        std::error_code ignore;
+        const bool      has_last = std::filesystem::exists(bin, ignore);
+        try
+          {
+            write_file(tmp, file, true);
+            if (has_last)
+              keep_previous(bin, prev);
+            if (std::rename(tmp.c_str(), bin.c_str()) != 0)
+              throw file_error(bin, errno);
+            sync_to_disk(dir);
+          }
+        catch (const std::runtime_error &error)
+          {
+            ::unlink(tmp.c_str());
+            return error.what() +
+                   (std::filesystem::exists(bin, ignore) ?
+                      "; the last checkpoint " + bin + " is unchanged" :
+                      std::string());
+          }
+        return {};
+      }
+
+      /**
+       * The checkpoint file's bytes if it is intact for `identity`, else
+       * the message of the refusal (first rank).
+       */
+      std::string
+      check_file(const std::string        &dir,
+                 const CheckpointIdentity &identity,
+                 std::string              &bytes)
+      {
+        const std::string bin = dir + "/checkpoint.bin", prev = bin + ".prev";
+        std::string       problem;
+        std::error_code   ignore;
+        if (!std::filesystem::exists(bin, ignore))
+          problem = "does not exist";
+        else
+          {
+            bytes   = read_bytes(bin);
+            problem = find_problem(bytes, identity);
+          }
+        if (problem.empty())
+          return {};
+        bool prev_intact = false;
+        try
+          {
+            prev_intact = std::filesystem::exists(prev, ignore) &&
+                          find_problem(read_bytes(prev), identity).empty();
+          }
+        catch (const std::runtime_error &)
+          {}
+        return bin + ": " + problem +
+               (prev_intact ?
+                  "; the previous checkpoint " + prev +
+                    " is intact: move it to " + bin + " and resume" :
+                  std::string());
+      }
+    } // namespace
+
+
+    /**
+     * Every rank serialises its part; on N > 1 ranks the first gathers
+     * them into the one file (the header records N) and every rank learns
+     * whether the write failed.
+     */
     void
     write_checkpoint(
       const std::string                                            &dir,
@@ -231,29 +355,21 @@ namespace rsfcycle
         save(archive);
       }
       std::string file = payload.str();
-      file.insert(0, make_header(identity, file));
-
-      const std::string bin = dir + "/checkpoint.bin", prev = bin + ".prev",
-                        tmp = dir + "/checkpoint.tmp";
-      std::error_code ignore;
-      const bool      has_last = std::filesystem::exists(bin, ignore);
-      try
+      if (n_ranks() > 1)
         {
-          write_file(tmp, file, true);
-          if (has_last)
-            keep_previous(bin, prev);
-          if (std::rename(tmp.c_str(), bin.c_str()) != 0)
-            throw file_error(bin, errno);
-          sync_to_disk(dir);
+          const auto parts = dealii::Utilities::MPI::gather(world(), file, 0);
+          file             = is_root() ? join(parts) : std::string();
         }
-      catch (const std::runtime_error &error)
+      std::string error;
+      if (is_root())
         {
-          ::unlink(tmp.c_str());
-          throw std::runtime_error(
-            error.what() + (std::filesystem::exists(bin, ignore) ?
-                              "; the last checkpoint " + bin + " is unchanged" :
-                              std::string()));
+          file.insert(0, make_header(identity, file));
+          error = write_file_with_backup(dir, file);
         }
+      if (n_ranks() > 1)
+        error = dealii::Utilities::MPI::broadcast(world(), error, 0);
+      if (!error.empty())
+        throw std::runtime_error(error);
     }
 
 
@@ -263,34 +379,24 @@ namespace rsfcycle
       const CheckpointIdentity                                     &identity,
       const std::function<void(boost::archive::binary_iarchive &)> &load)
     {
-      const std::string bin = dir + "/checkpoint.bin", prev = bin + ".prev";
-      std::string       bytes, problem;
-      std::error_code   ignore;
-      if (!std::filesystem::exists(bin, ignore))
-        problem = "does not exist";
-      else
-        {
-          bytes   = read_bytes(bin);
-          problem = find_problem(bytes, identity);
-        }
+      std::string bytes, problem;
+      if (is_root())
+        problem = check_file(dir, identity, bytes);
+      if (n_ranks() > 1)
+        problem = dealii::Utilities::MPI::broadcast(world(), problem, 0);
       if (!problem.empty())
-        {
-          bool prev_intact = false;
-          try
-            {
-              prev_intact = std::filesystem::exists(prev, ignore) &&
-                            find_problem(read_bytes(prev), identity).empty();
-            }
-          catch (const std::runtime_error &)
-            {}
-          throw std::invalid_argument(
-            bin + ": " + problem +
-            (prev_intact ? "; the previous checkpoint " + prev +
-                             " is intact: move it to " + bin + " and resume" :
-                           std::string()));
-        }
+        throw std::invalid_argument(problem);
 
-      std::istringstream payload(bytes.substr(header_size));
+      std::string own = is_root() ? bytes.substr(header_size) : std::string();
+      if (n_ranks() > 1)
+        {
+          std::vector<std::string> parts;
+          if (is_root())
+            parts = split(own);
+          parts = dealii::Utilities::MPI::broadcast(world(), parts, 0);
+          own   = parts.at(dealii::Utilities::MPI::this_mpi_process(world()));
+        }
+      std::istringstream payload(own);
       try
         {
           boost::archive::binary_iarchive archive(payload);
@@ -299,7 +405,9 @@ namespace rsfcycle
       catch (const boost::archive::archive_exception &error)
         {
           throw std::invalid_argument(
-            bin + ": cannot be read although its checksum is right (" +
+            dir +
+            "/checkpoint.bin: cannot be read although its checksum is "
+            "right (" +
             error.what() + "): a program error, please report it");
         }
     }

@@ -1,6 +1,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <deal.II/base/mpi.h>
 #include <fcntl.h>
 #include <filesystem>
 #include <rsfcycle/output/files.h>
@@ -11,6 +12,26 @@ namespace rsfcycle
 {
   namespace output
   {
+    bool
+    is_root()
+    {
+      int started = 0;
+      MPI_Initialized(&started);
+      return started == 0 ||
+             dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    }
+
+
+    int
+    max_over_ranks(const int value)
+    {
+      int started = 0;
+      MPI_Initialized(&started);
+      return started == 0 ? value :
+                            dealii::Utilities::MPI::max(value, MPI_COMM_WORLD);
+    }
+
+
     std::runtime_error
     file_error(const std::string &path, const int error)
     {
@@ -87,6 +108,8 @@ namespace rsfcycle
     write_parameters(const std::string              &dir,
                      const dealii::ParameterHandler &prm)
     {
+      if (!is_root())
+        return;
       std::filesystem::create_directories(dir);
       std::ostringstream text;
       prm.print_parameters(text, dealii::ParameterHandler::PRM);

@@ -27,6 +27,9 @@ namespace rsfcycle
         return !z.empty() && z[i] < z[j];
       });
 
+      // the first rank writes; the others keep the interface
+      if (!writing)
+        return;
       paths                         = {{dir + "/time-series.csv",
                                         dir + "/base-profile.csv",
                                         dir + "/events.csv"}};
@@ -109,6 +112,8 @@ namespace rsfcycle
                          const unsigned int          spatial_problems,
                          const time::StepStatistics &work)
     {
+      if (!writing)
+        return;
       const auto fastest =
         std::max_element(sample.slip_rates.begin(), sample.slip_rates.end());
       const double max_rate =
@@ -130,6 +135,8 @@ namespace rsfcycle
     void
     Recorder::write_profile(const double t, const std::vector<double> &rates)
     {
+      if (!writing)
+        return;
       profile_row << t;
       for (const unsigned int k : order)
         profile_row << rates[k];
@@ -141,6 +148,8 @@ namespace rsfcycle
     void
     Recorder::write_event(const unsigned int index, const Event &event)
     {
+      if (!writing)
+        return;
       EventDetector::write_csv_row(catalogue, index, event);
       catalogue.flush();
       check();
@@ -150,6 +159,8 @@ namespace rsfcycle
     void
     Recorder::flush()
     {
+      if (!writing)
+        return;
       series.flush();
       profile.flush();
       catalogue.flush();
@@ -160,6 +171,8 @@ namespace rsfcycle
     FileSizes
     Recorder::sync()
     {
+      if (!writing)
+        return {};
       flush();
       for (const auto &path : paths)
         sync_to_disk(path);

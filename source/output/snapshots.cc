@@ -60,7 +60,8 @@ namespace rsfcycle
         is_selected(const typename Triangulation<dim>::cell_iterator &cell,
                     const unsigned int                                f) const
         {
-          return cell->is_active() && cell->face(f)->at_boundary() &&
+          return cell->is_active() && cell->is_locally_owned() &&
+                 cell->face(f)->at_boundary() &&
                  cell->face(f)->boundary_id() == id;
         }
 
@@ -101,26 +102,33 @@ namespace rsfcycle
     SnapshotWriter<dim>::base_fields(const BodyState &state) const
     {
       std::vector<la::Vector> field(
-        n_fields, la::Vector(discretisation.scalar_dof_handler.n_dofs()));
+        n_fields, la::Vector(discretisation.scalar_partitioner));
       field[log_slip_rate]            = std::log10(1e-20);
       const auto               &nodes = contact.nodes();
       const std::vector<double> rates = contact.slip_rates(state.v);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
-          const auto &info      = nodes[k];
-          const auto  dof       = info.scalar_dof;
-          field[slip_rate][dof] = rates[k];
-          field[log_slip_rate][dof] =
+          const auto &info = nodes[k];
+          // the scalar dof of a vertex has the owner of its vector dofs
+          const auto dof =
+            discretisation.scalar_partitioner->global_to_local(info.scalar_dof);
+          if (dof >= discretisation.scalar_partitioner->locally_owned_size())
+            throw std::logic_error("snapshot: a contact node's scalar dof "
+                                   "is owned by another rank");
+          field[slip_rate].local_element(dof) = rates[k];
+          field[log_slip_rate].local_element(dof) =
             std::log10(std::max(rates[k] / v0, 1e-20));
-          field[theta][dof] =
+          field[theta].local_element(dof) =
             info.params.L / info.params.v_star * std::exp(state.alpha[k]);
-          field[mu][dof]       = friction::friction_coefficient(info.params,
-                                                          state.alpha[k],
-                                                          rates[k]);
-          field[traction][dof] = state.shear_traction[k];
-          field[normal_stress][dof] = info.normal_force / info.weight;
-          field[rate_minus_v0][dof] = rates[k] - v0;
-          field[slip_um][dof] =
+          field[mu].local_element(dof) =
+            friction::friction_coefficient(info.params,
+                                           state.alpha[k],
+                                           rates[k]);
+          field[traction].local_element(dof) = state.shear_traction[k];
+          field[normal_stress].local_element(dof) =
+            info.normal_force / info.weight;
+          field[rate_minus_v0].local_element(dof) = rates[k] - v0;
+          field[slip_um].local_element(dof) =
             1e6 *
             solvers::tangential_norm(contact.contact_set().nodes[k], state.u);
         }
@@ -132,6 +140,8 @@ namespace rsfcycle
                             rate_minus_v0,
                             slip_um})
         discretisation.scalar_constraints.distribute(field[f]);
+      for (auto &f : field)
+        f.update_ghost_values();
       return field;
     }
 
@@ -155,7 +165,9 @@ namespace rsfcycle
     SnapshotWriter<dim>::write(const BodyState &state, const double t)
     {
       const std::vector<la::Vector> field = base_fields(state);
-      const auto &scalar_dofs             = discretisation.scalar_dof_handler;
+      state.u.update_ghost_values();
+      state.v.update_ghost_values();
+      const auto &scalar_dofs = discretisation.scalar_dof_handler;
 
       DataOut<dim> data_out;
       data_out.attach_dof_handler(discretisation.dof_handler);
@@ -182,6 +194,10 @@ namespace rsfcycle
                                field[normal_stress],
                                "normal_stress");
       const auto   &tria = discretisation.triangulation;
+      Vector<float> subdomain(tria.n_active_cells());
+      for (const auto &cell : tria.active_cell_iterators())
+        subdomain[cell->active_cell_index()] = cell->subdomain_id();
+      data_out.add_data_vector(subdomain, "mpi_rank");
       Vector<float> material(tria.n_active_cells());
       for (const auto &cell : tria.active_cell_iterators())
         material[cell->active_cell_index()] = cell->material_id();
@@ -197,18 +213,15 @@ namespace rsfcycle
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);
       const std::string number = Utilities::int_to_string(n_snapshots, 5);
-      const std::string name   = "solution/solution-" + number + ".vtu";
-      {
-        std::ostringstream vtu;
-        data_out.write_vtu(vtu);
-        write_file(in_folder(name), vtu.str());
-      }
+      const std::string name =
+        write_pieces(data_out, "solution/solution-" + number);
       records.emplace_back(t, name);
-      {
-        std::ostringstream pvd;
-        DataOutBase::write_pvd_record(pvd, records);
-        replace_file(dir + "/solution.pvd", pvd.str());
-      }
+      if (is_root())
+        {
+          std::ostringstream pvd;
+          DataOutBase::write_pvd_record(pvd, records);
+          replace_file(dir + "/solution.pvd", pvd.str());
+        }
 
       // The fault (contact faces) at the same times: fault/fault-NNNNN.vtu,
       // fault.pvd (the paper's figure 9 draws isolines of V - v0 on it).
@@ -222,23 +235,56 @@ namespace rsfcycle
       fault.add_data_vector(field[mu], "friction_coefficient");
       fault.build_patches();
       fault.set_flags(flags);
-      {
-        std::ostringstream fault_vtu;
-        fault.write_vtu(fault_vtu);
-        write_file(in_folder("fault/fault-" + number + ".vtu"),
-                   fault_vtu.str());
-      }
-      std::vector<std::pair<double, std::string>> fault_records;
-      for (unsigned int i = 0; i < records.size(); ++i)
-        fault_records.emplace_back(records[i].first,
-                                   "fault/fault-" +
-                                     Utilities::int_to_string(i, 5) + ".vtu");
-      {
-        std::ostringstream fault_pvd;
-        DataOutBase::write_pvd_record(fault_pvd, fault_records);
-        replace_file(dir + "/fault.pvd", fault_pvd.str());
-      }
+      const std::string fault_name =
+        write_pieces(fault, "fault/fault-" + number);
+      fault_records.emplace_back(t, fault_name);
+      if (is_root())
+        {
+          std::ostringstream fault_pvd;
+          DataOutBase::write_pvd_record(fault_pvd, fault_records);
+          replace_file(dir + "/fault.pvd", fault_pvd.str());
+        }
       ++n_snapshots;
+    }
+
+
+    /**
+     * One rank: `stem`.vtu. N ranks: every rank writes its cells to
+     * `stem`.RANK.vtu and the first rank `stem`.pvtu naming them. Returns
+     * the name to record in the PVD file.
+     */
+    template <int dim>
+    template <class Writer>
+    std::string
+    SnapshotWriter<dim>::write_pieces(const Writer      &writer,
+                                      const std::string &stem) const
+    {
+      const MPI_Comm     comm = discretisation.triangulation.get_communicator();
+      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+      const auto         piece   = [&](const unsigned int r) {
+        return n_ranks == 1 ?
+                           stem + ".vtu" :
+                           stem + "." + Utilities::int_to_string(r, 4) + ".vtu";
+      };
+      {
+        std::ostringstream vtu;
+        writer.write_vtu(vtu);
+        write_file(in_folder(piece(rank)), vtu.str());
+      }
+      if (n_ranks == 1)
+        return piece(0);
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          const std::string folder = stem.substr(0, stem.find_last_of('/') + 1);
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pieces.push_back(piece(r).substr(folder.size()));
+          std::ostringstream pvtu;
+          writer.write_pvtu_record(pvtu, pieces);
+          write_file(in_folder(stem + ".pvtu"), pvtu.str());
+        }
+      return stem + ".pvtu";
     }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/affine_constraints.templates.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <rsfcycle/ids.h>
@@ -70,31 +71,52 @@ namespace rsfcycle
     void
     Discretisation<dim>::setup_system()
     {
+      const MPI_Comm comm = triangulation.get_communicator();
       dof_handler.distribute_dofs(fe);
       dof_handler.distribute_mg_dofs();
       scalar_dof_handler.distribute_dofs(scalar_fe);
+      const IndexSet &owned = dof_handler.locally_owned_dofs();
+      const IndexSet  relevant =
+        DoFTools::extract_locally_relevant_dofs(dof_handler);
 
       hanging_constraints.clear();
+      hanging_constraints.reinit(relevant);
       DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
       hanging_constraints.close();
+      const IndexSet scalar_relevant =
+        DoFTools::extract_locally_relevant_dofs(scalar_dof_handler);
       scalar_constraints.clear();
+      scalar_constraints.reinit(scalar_relevant);
       DoFTools::make_hanging_node_constraints(scalar_dof_handler,
                                               scalar_constraints);
       scalar_constraints.close();
+      scalar_partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+        scalar_dof_handler.locally_owned_dofs(), scalar_relevant, comm);
 
-      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      // The rows of other ranks' dofs that this rank's cells add to go to
+      // their owners; the ghosts of the vectors are the relevant dofs and
+      // every column of an owned row (the kernels read them).
+      DynamicSparsityPattern dsp(relevant);
       DoFTools::make_sparsity_pattern(dof_handler,
                                       dsp,
                                       hanging_constraints,
                                       true);
-      sparsity_pattern.copy_from(dsp);
-      mass_matrix.reinit(sparsity_pattern);
-      viscosity_matrix.reinit(sparsity_pattern);
-      stiffness_matrix.reinit(sparsity_pattern);
-      partitioner = std::make_shared<Utilities::MPI::Partitioner>(
-        dof_handler.locally_owned_dofs(),
-        DoFTools::extract_locally_relevant_dofs(dof_handler),
-        triangulation.get_communicator());
+      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      IndexSet ghosts = relevant;
+      {
+        std::vector<types::global_dof_index> columns;
+        for (const auto row : owned)
+          for (auto it = dsp.begin(row); it != dsp.end(row); ++it)
+            columns.push_back(it->column());
+        std::sort(columns.begin(), columns.end());
+        columns.erase(std::unique(columns.begin(), columns.end()),
+                      columns.end());
+        ghosts.add_indices(columns.begin(), columns.end());
+      }
+      for (auto *matrix : {&mass_matrix, &viscosity_matrix, &stiffness_matrix})
+        matrix->reinit(owned, owned, dsp, comm);
+      partitioner =
+        std::make_shared<Utilities::MPI::Partitioner>(owned, ghosts, comm);
       reinit(body_force);
       step_matrices.clear();
     }
@@ -104,46 +126,49 @@ namespace rsfcycle
     void
     Discretisation<dim>::setup_boundary_conditions()
     {
-      const types::global_dof_index n_dofs = dof_handler.n_dofs();
-      fixed.assign(n_dofs, false);
+      const unsigned int n_local =
+        partitioner->locally_owned_size() + partitioner->n_ghost_indices();
+      fixed.assign(n_local, false);
       backstop_dofs.clear();
-      for (types::global_dof_index i = 0; i < n_dofs; ++i)
-        if (hanging_constraints.is_constrained(i))
+      for (unsigned int i = 0; i < n_local; ++i)
+        if (hanging_constraints.is_constrained(partitioner->local_to_global(i)))
           fixed[i] = true;
 
-      // One pass over the boundary faces in cell order: a backstop dof is
-      // recorded only if no earlier face fixed it.
+      // The boundary faces of the rank's cells and their ghost neighbours;
+      // the backstop dofs set directly are the owned ones that are not
+      // hanging (the backstop velocity has no normal component, so a base
+      // vertex of the backstop keeps u.n = 0 either way).
       for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int f : cell->face_indices())
-          {
-            const auto face = cell->face(f);
-            if (!face->at_boundary())
-              continue;
-            const types::boundary_id id = face->boundary_id();
-            if (id == boundary_id::backstop)
+        {
+          if (cell->is_artificial())
+            continue;
+          for (const unsigned int f : cell->face_indices())
+            {
+              const auto face = cell->face(f);
+              if (!face->at_boundary())
+                continue;
+              const types::boundary_id id = face->boundary_id();
               for (const unsigned int v : face->vertex_indices())
                 for (unsigned int c = 0; c < dim; ++c)
                   {
                     const auto dof = face->vertex_dof_index(v, c);
-                    if (!fixed[dof])
-                      backstop_dofs.emplace_back(dof, c);
-                    fixed[dof] = true;
+                    if (!is_local(dof))
+                      continue;
+                    const unsigned int i = local_index(dof);
+                    if (id == boundary_id::backstop)
+                      {
+                        if (!fixed[i] && partitioner->in_local_range(dof) &&
+                            !hanging_constraints.is_constrained(dof))
+                          backstop_dofs.emplace_back(i, c);
+                        fixed[i] = true;
+                      }
+                    else if ((id == boundary_id::lateral && dim == 3 &&
+                              c == dim - 1) ||
+                             (id == boundary_id::contact && c == 1))
+                      fixed[i] = true;
                   }
-            else if (id == boundary_id::lateral && dim == 3)
-              for (const unsigned int v : face->vertex_indices())
-                fixed[face->vertex_dof_index(v, dim - 1)] = true;
-            else if (id == boundary_id::contact)
-              for (const unsigned int v : face->vertex_indices())
-                fixed[face->vertex_dof_index(v, 1)] = true;
-          }
-      // backstop dofs that are hanging are set by distribute(), not directly
-      backstop_dofs.erase(
-        std::remove_if(backstop_dofs.begin(),
-                       backstop_dofs.end(),
-                       [&](const auto &d) {
-                         return hanging_constraints.is_constrained(d.first);
-                       }),
-        backstop_dofs.end());
+            }
+        }
     }
 
 
@@ -224,6 +249,8 @@ namespace rsfcycle
 
       for (const auto &active_cell : dof_handler.active_cell_iterators())
         {
+          if (!active_cell->is_locally_owned())
+            continue;
           cell_matrices(active_cell, fe_values, cell, cell_force);
           active_cell->get_dof_indices(dof_indices);
           hanging_constraints.distribute_local_to_global(
@@ -235,8 +262,12 @@ namespace rsfcycle
                                                          dof_indices,
                                                          stiffness_matrix);
         }
-      mass_local.initialize(mass_matrix);
-      stiffness_local.initialize(stiffness_matrix);
+      for (auto *matrix : {&mass_matrix, &viscosity_matrix, &stiffness_matrix})
+        matrix->compress(VectorOperation::add);
+      body_force.compress(VectorOperation::add);
+      mass_local.initialize(mass_matrix, partitioner);
+      viscosity_local.initialize(viscosity_matrix, partitioner);
+      stiffness_local.initialize(stiffness_matrix, partitioner);
     }
 
 
@@ -256,26 +287,27 @@ namespace rsfcycle
       if (!std::isfinite(body_force.l2_norm()))
         throw std::runtime_error("the gravity load is not finite (Gravity, "
                                  "densities)");
-      SparseMatrix<double> K(sparsity_pattern);
+      TrilinosWrappers::SparseMatrix K;
       K.copy_from(stiffness_matrix);
       la::Vector rhs(body_force);
-      for (auto it = K.begin(); it != K.end(); ++it)
-        if (fixed[it->row()] || fixed[it->column()])
-          it->value() = (it->row() == it->column()) ? 1. : 0.;
-      for (types::global_dof_index i = 0; i < rhs.size(); ++i)
-        if (fixed[i])
-          rhs[i] = 0;
+      for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
+        {
+          const auto row = partitioner->local_to_global(i);
+          for (auto it = K.begin(row); it != K.end(row); ++it)
+            if (fixed[i] || fixed[local_index(it->column())])
+              it->value() = (row == it->column()) ? 1. : 0.;
+          if (fixed[i])
+            rhs.local_element(i) = 0;
+        }
       // CG with algebraic multigrid (Trilinos ML): memory and time grow
       // linearly with the unknowns (the sparse LU it replaced took 232 s and
       // 2.8 GB for the 3D wedge; this takes 5 s and 70 iterations). The
       // residual left is a spurious load on the first velocity solves, from
       // rest: at 1e-12 they needed twice the TNNMG iterations, at 1e-14 as
       // many as after the LU.
-      TrilinosWrappers::SparseMatrix K_amg;
-      K_amg.reinit(K);
       TrilinosWrappers::PreconditionAMG amg;
-      amg.initialize(K_amg, solvers::elasticity_amg_data(dof_components()));
-      const la::LocalMatrix K_local(K);
+      amg.initialize(K, solvers::elasticity_amg_data(dof_components()));
+      const la::LocalMatrix K_local(K, partitioner);
       la::Vector            u;
       reinit(u);
       SolverControl control(2000, 1e-14 * rhs.l2_norm(), false, false);
@@ -292,6 +324,7 @@ namespace rsfcycle
             std::to_string(failure.last_step) + " iterations)");
         }
       gravity_iterations = control.last_step();
+      u.zero_out_ghost_values();
       hanging_constraints.distribute(u);
 
       la::Vector reaction;
@@ -315,45 +348,54 @@ namespace rsfcycle
     Discretisation<dim>::set_fixed_values(la::Vector &v, const double t) const
     {
       const Tensor<1, dim> velocity = scene.backstop_velocity(t);
-      for (const auto &[dof, component] : backstop_dofs)
-        v[dof] = velocity[component];
+      for (const auto &[i, component] : backstop_dofs)
+        v.local_element(i) = velocity[component];
     }
 
 
     /** The last four are kept: step doubling alternates tau/2, tau, 2 tau. */
     template <int dim>
-    const SparseMatrix<double> &
-    Discretisation<dim>::step_matrix(const double tau, const bool dynamic)
+    typename Discretisation<dim>::StepMatrix &
+    Discretisation<dim>::cached_step_matrix(const double tau,
+                                            const bool   dynamic)
     {
       for (auto &entry : step_matrices)
-        if (entry.tau == tau)
-          return *entry.matrix;
+        if (entry.tau == tau && entry.dynamic == dynamic)
+          return entry;
       if (step_matrices.size() >= 4)
         step_matrices.erase(step_matrices.begin());
-      auto A = std::make_unique<SparseMatrix<double>>(sparsity_pattern);
-      A->copy_from(viscosity_matrix);
-      A->add(tau / 2, stiffness_matrix);
-      if (dynamic)
-        A->add(2. / tau, mass_matrix);
-      auto local = std::make_unique<la::LocalMatrix>(*A);
-      step_matrices.push_back({tau, std::move(A), std::move(local)});
-      return *step_matrices.back().matrix;
+      auto A = std::make_unique<la::LocalMatrix>();
+      A->combine({{1., &viscosity_local},
+                  {tau / 2, &stiffness_local},
+                  {dynamic ? 2. / tau : 0., &mass_local}});
+      step_matrices.push_back({tau, dynamic, std::move(A), nullptr});
+      return step_matrices.back();
     }
 
 
     template <int dim>
     const la::LocalMatrix &
-    Discretisation<dim>::local(const SparseMatrix<double> &matrix) const
+    Discretisation<dim>::step_matrix(const double tau, const bool dynamic)
     {
-      if (&matrix == &mass_matrix)
-        return mass_local;
-      if (&matrix == &stiffness_matrix)
-        return stiffness_local;
-      for (const auto &entry : step_matrices)
-        if (entry.matrix.get() == &matrix)
-          return *entry.local;
-      throw std::logic_error("Discretisation::local: not a matrix of this "
-                             "discretisation");
+      return *cached_step_matrix(tau, dynamic).local;
+    }
+
+
+    template <int dim>
+    const TrilinosWrappers::SparseMatrix &
+    Discretisation<dim>::assembled_step_matrix(const double tau,
+                                               const bool   dynamic)
+    {
+      StepMatrix &entry = cached_step_matrix(tau, dynamic);
+      if (!entry.assembled)
+        {
+          entry.assembled = std::make_unique<TrilinosWrappers::SparseMatrix>();
+          entry.assembled->copy_from(viscosity_matrix);
+          entry.assembled->add(tau / 2, stiffness_matrix);
+          if (dynamic)
+            entry.assembled->add(2. / tau, mass_matrix);
+        }
+      return *entry.assembled;
     }
 
 
@@ -361,14 +403,17 @@ namespace rsfcycle
     std::vector<unsigned int>
     Discretisation<dim>::dof_components() const
     {
-      std::vector<unsigned int>            component(dof_handler.n_dofs());
+      std::vector<unsigned int> component(partitioner->locally_owned_size());
       std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
-        {
-          cell->get_dof_indices(indices);
-          for (unsigned int i = 0; i < indices.size(); ++i)
-            component[indices[i]] = fe.system_to_component_index(i).first;
-        }
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              if (partitioner->in_local_range(indices[i]))
+                component[local_index(indices[i])] =
+                  fe.system_to_component_index(i).first;
+          }
       return component;
     }
 

@@ -44,24 +44,29 @@ namespace rsfcycle
       h->key = system.matrix_key;
       // The fixed (Dirichlet, hanging) rows and columns decoupled: these are
       // the non-contact truncated dofs, constant while the key is.
-      const std::vector<bool> &truncated = *system.truncated;
-      const ContactSet        &contact   = *system.contact;
-      SparseMatrix<double>     A(system.A->get_sparsity_pattern());
-      A.copy_from(*system.A);
-      const auto is_fixed = [&](const types::global_dof_index i) {
+      const std::vector<bool> &truncated   = *system.truncated;
+      const ContactSet        &contact     = *system.contact;
+      const auto              &partitioner = *system.local_A->get_partitioner();
+      h->matrix.copy_from(system.assembled_A());
+      const auto is_fixed = [&](const unsigned int i) {
         return truncated[i] && contact.dof_to_node[i] < 0;
       };
-      for (auto it = A.begin(); it != A.end(); ++it)
-        if (it->row() != it->column() &&
-            (is_fixed(it->row()) || is_fixed(it->column())))
-          it->value() = 0;
-      h->matrix.reinit(A);
+      for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
+        {
+          const auto row = partitioner.local_to_global(i);
+          for (auto it = h->matrix.begin(row); it != h->matrix.end(row); ++it)
+            if (it->column() != row &&
+                (is_fixed(i) ||
+                 is_fixed(partitioner.global_to_local(it->column()))))
+              it->value() = 0;
+        }
       for (const ContactNode &node : contact.nodes)
         {
           std::array<double, 4> d{};
           for (unsigned int i = 0; i < node.n_dofs; ++i)
             for (unsigned int j = 0; j < node.n_dofs; ++j)
-              d[node.n_dofs * i + j] = A.el(node.dofs[i], node.dofs[j]);
+              d[node.n_dofs * i + j] =
+                system.local_A->el(node.dofs[i], node.dofs[j]);
           h->original.push_back(d);
         }
       cache.push_back(std::move(h));
@@ -98,15 +103,21 @@ namespace rsfcycle
                   changed = true;
               }
         }
+      // the rebuild is collective: every rank rebuilds if one needs it
+      changed =
+        Utilities::MPI::max(
+          static_cast<int>(changed),
+          system.local_A->get_partitioner()->get_mpi_communicator()) > 0;
       if (!changed)
         return;
+      const auto &partitioner = *system.local_A->get_partitioner();
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         {
           const ContactNode &node = contact.nodes[k];
           for (unsigned int i = 0; i < node.n_dofs; ++i)
             for (unsigned int j = 0; j < node.n_dofs; ++j)
-              h.matrix.set(node.dofs[i],
-                           node.dofs[j],
+              h.matrix.set(partitioner.local_to_global(node.dofs[i]),
+                           partitioner.local_to_global(node.dofs[j]),
                            h.wanted[k][node.n_dofs * i + j]);
         }
       h.current = h.wanted;

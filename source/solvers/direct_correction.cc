@@ -13,7 +13,6 @@ namespace rsfcycle
 {
   namespace solvers
   {
-    using dealii::SparseMatrix;
     using dealii::Vector;
 
     struct DirectCorrection::Factorization
@@ -38,9 +37,10 @@ namespace rsfcycle
         if (f->key == system.matrix_key)
           return *f;
 
-      const SparseMatrix<double> &A       = *system.A;
-      const ContactSet           &contact = *system.contact;
-      const global_dof_index      n       = A.m();
+      // one rank: local indices are the global ones
+      const la::LocalMatrix &A       = *system.local_A;
+      const ContactSet      &contact = *system.contact;
+      const unsigned int     n       = A.m();
       if (interior_index.size() != n)
         {
           // Interior: free dofs without friction (fixed ones are truncated
@@ -49,7 +49,7 @@ namespace rsfcycle
           contact_dofs.clear();
           interior_index.assign(n, -1);
           contact_index.assign(n, -1);
-          for (global_dof_index i = 0; i < n; ++i)
+          for (unsigned int i = 0; i < n; ++i)
             if (contact.dof_to_node[i] >= 0)
               {
                 contact_index[i] = contact_dofs.size();
@@ -70,15 +70,19 @@ namespace rsfcycle
       const unsigned int             n_I = interior.size();
       dealii::DynamicSparsityPattern dsp(n_I, n_I);
       for (unsigned int k = 0; k < n_I; ++k)
-        for (auto it = A.begin(interior[k]); it != A.end(interior[k]); ++it)
-          if (interior_index[it->column()] >= 0)
-            dsp.add(k, interior_index[it->column()]);
+        for (unsigned int j = A.row_begin(interior[k]);
+             j < A.row_end(interior[k]);
+             ++j)
+          if (interior_index[A.column(j)] >= 0)
+            dsp.add(k, interior_index[A.column(j)]);
       f->pattern.copy_from(dsp);
       f->A_II.reinit(f->pattern);
       for (unsigned int k = 0; k < n_I; ++k)
-        for (auto it = A.begin(interior[k]); it != A.end(interior[k]); ++it)
-          if (interior_index[it->column()] >= 0)
-            f->A_II.set(k, interior_index[it->column()], it->value());
+        for (unsigned int j = A.row_begin(interior[k]);
+             j < A.row_end(interior[k]);
+             ++j)
+          if (interior_index[A.column(j)] >= 0)
+            f->A_II.set(k, interior_index[A.column(j)], A.value(j));
       f->lu.factorize(f->A_II);
 
       const unsigned int n_c = contact_dofs.size();
@@ -86,13 +90,14 @@ namespace rsfcycle
       // A symmetric: column j of A_Ic is row contact_dofs[j] restricted to I.
       dealii::FullMatrix<double> A_Ic(n_I, n_c);
       for (unsigned int j = 0; j < n_c; ++j)
-        for (auto it = A.begin(contact_dofs[j]); it != A.end(contact_dofs[j]);
-             ++it)
+        for (unsigned int e = A.row_begin(contact_dofs[j]);
+             e < A.row_end(contact_dofs[j]);
+             ++e)
           {
-            if (interior_index[it->column()] >= 0)
-              A_Ic(interior_index[it->column()], j) = it->value();
-            else if (contact_index[it->column()] >= 0)
-              f->schur(contact_index[it->column()], j) += it->value();
+            if (interior_index[A.column(e)] >= 0)
+              A_Ic(interior_index[A.column(e)], j) = A.value(e);
+            else if (contact_index[A.column(e)] >= 0)
+              f->schur(contact_index[A.column(e)], j) += A.value(e);
           }
       f->lu.solve(A_Ic, f->Z);
       // S = A_cc - A_Ic^T Z
@@ -109,11 +114,11 @@ namespace rsfcycle
                             const la::Vector            &rhs,
                             la::Vector                  &c)
     {
-      const Factorization        &f         = factorization(system);
-      const SparseMatrix<double> &A         = *system.A;
-      const ContactSet           &contact   = *system.contact;
-      const std::vector<bool>    &truncated = *system.truncated;
-      const unsigned int          n_I       = interior.size();
+      const Factorization     &f         = factorization(system);
+      const la::LocalMatrix   &A         = *system.local_A;
+      const ContactSet        &contact   = *system.contact;
+      const std::vector<bool> &truncated = *system.truncated;
+      const unsigned int       n_I       = interior.size();
 
       // Active contact dofs and their position in contact_dofs.
       std::vector<unsigned int> active;
@@ -144,9 +149,9 @@ namespace rsfcycle
               active_position[active[p]] = p;
               const global_dof_index row = contact_dofs[active[p]];
               x_a[p]                     = b[row];
-              for (auto it = A.begin(row); it != A.end(row); ++it)
-                if (interior_index[it->column()] >= 0)
-                  x_a[p] -= it->value() * y[interior_index[it->column()]];
+              for (unsigned int e = A.row_begin(row); e < A.row_end(row); ++e)
+                if (interior_index[A.column(e)] >= 0)
+                  x_a[p] -= A.value(e) * y[interior_index[A.column(e)]];
               for (unsigned int q = 0; q < n_a; ++q)
                 S(p, q) = f.schur(active[p], active[q]);
             }

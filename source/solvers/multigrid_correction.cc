@@ -4,6 +4,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/householder.h>
 #include <deal.II/lac/precondition.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/multigrid/mg_coarse.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
@@ -24,7 +26,9 @@ namespace rsfcycle
       /**
        * The coarse level by Householder least squares (deal.II's
        * MGCoarseGridHouseholder, which takes serial vectors only): the
-       * coarse level is whole on every rank.
+       * coarse matrix and right-hand side are gathered onto every rank and
+       * solved there redundantly (the coarse mesh does not grow with the
+       * number of ranks).
        */
       class CoarseHouseholder : public MGCoarseGridBase<la::Vector>
       {
@@ -41,11 +45,16 @@ namespace rsfcycle
                    const la::Vector &src) const override
         {
           // buffers kept: the coarse solve runs in every V-cycle
-          b.reinit(src.size(), true);
+          const auto &partitioner = *src.get_partitioner();
+          b.reinit(src.size(), false);
           x.reinit(dst.size(), true);
-          std::copy(src.begin(), src.end(), b.begin());
+          for (unsigned int i = 0; i < src.locally_owned_size(); ++i)
+            b[partitioner.local_to_global(i)] = src.local_element(i);
+          if (partitioner.n_mpi_processes() > 1)
+            Utilities::MPI::sum(b, partitioner.get_mpi_communicator(), b);
           householder.least_squares(x, b);
-          std::copy(x.begin(), x.end(), dst.begin());
+          for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
+            dst.local_element(i) = x[partitioner.local_to_global(i)];
         }
 
       private:
@@ -63,9 +72,8 @@ namespace rsfcycle
     template <int dim>
     struct MultigridCorrection<dim>::LevelOperators
     {
-      double                              key = 0;
-      MGLevelObject<SparseMatrix<double>> matrices, interface;
-      /** The same, read in place by the cycle (distributed vectors). */
+      double key = 0;
+      /** The level step matrices and their interface parts. */
       MGLevelObject<la::LocalMatrix> local_matrices, local_interface;
       /** Original diagonal blocks of the contact blocks, by level. */
       std::vector<std::vector<std::array<double, 4>>> original;
@@ -93,6 +101,7 @@ namespace rsfcycle
       const std::vector<DirichletBoundary> &dirichlet,
       const types::boundary_id              contact_id,
       const std::vector<ContactVertex>     &contact_vertices,
+      const unsigned int                    first_node,
       const CellMatrices                   &cell_matrices,
       const Coefficients                   &coefficients,
       const Settings                       &settings)
@@ -100,8 +109,7 @@ namespace rsfcycle
       , coefficients(coefficients)
       , settings(settings)
     {
-      const unsigned int n_levels =
-        dof_handler.get_triangulation().n_global_levels();
+      n_levels = dof_handler.get_triangulation().n_global_levels();
 
       // Level constraints: refinement edges and the Dirichlet components.
       mg_constrained_dofs.initialize(dof_handler);
@@ -120,34 +128,65 @@ namespace rsfcycle
       transfer.initialize_constraints(mg_constrained_dofs);
       transfer.build(dof_handler);
 
-      // Level sparsity patterns and matrices.
-      patterns.resize(0, n_levels - 1);
-      interface_patterns.resize(0, n_levels - 1);
+      // Level sparsity patterns and matrices (Trilinos, so that the rows a
+      // rank adds to on its level cells go to their owners), kept as the
+      // rank's rows.
+      communicator = dof_handler.get_communicator();
+      level_partitioners.resize(n_levels);
+      std::array<MGLevelObject<TrilinosWrappers::SparseMatrix>, 3> assembled,
+        assembled_interface;
       for (unsigned int m = 0; m < 3; ++m)
         {
+          assembled[m].resize(0, n_levels - 1);
+          assembled_interface[m].resize(0, n_levels - 1);
           level_matrices[m].resize(0, n_levels - 1);
           interface_matrices[m].resize(0, n_levels - 1);
         }
       std::vector<AffineConstraints<double>> level_constraints(n_levels);
       for (unsigned int level = 0; level < n_levels; ++level)
         {
-          const types::global_dof_index n = dof_handler.n_dofs(level);
-          DynamicSparsityPattern        dsp(n, n);
+          const IndexSet &owned = dof_handler.locally_owned_mg_dofs(level);
+          const IndexSet  relevant =
+            DoFTools::extract_locally_relevant_level_dofs(dof_handler, level);
+          DynamicSparsityPattern dsp(relevant);
           MGTools::make_sparsity_pattern(dof_handler, dsp, level);
-          patterns[level].copy_from(dsp);
-          DynamicSparsityPattern interface_dsp(n, n);
+          SparsityTools::distribute_sparsity_pattern(dsp,
+                                                     owned,
+                                                     communicator,
+                                                     relevant);
+          DynamicSparsityPattern interface_dsp(relevant);
           MGTools::make_interface_sparsity_pattern(dof_handler,
                                                    mg_constrained_dofs,
                                                    interface_dsp,
                                                    level);
-          interface_patterns[level].copy_from(interface_dsp);
+          SparsityTools::distribute_sparsity_pattern(interface_dsp,
+                                                     owned,
+                                                     communicator,
+                                                     relevant);
+          IndexSet ghosts = relevant;
+          {
+            std::vector<types::global_dof_index> columns;
+            for (const auto row : owned)
+              for (auto it = dsp.begin(row); it != dsp.end(row); ++it)
+                columns.push_back(it->column());
+            std::sort(columns.begin(), columns.end());
+            columns.erase(std::unique(columns.begin(), columns.end()),
+                          columns.end());
+            ghosts.add_indices(columns.begin(), columns.end());
+          }
+          level_partitioners[level] =
+            std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                          ghosts,
+                                                          communicator);
           for (unsigned int m = 0; m < 3; ++m)
             {
-              level_matrices[m][level].reinit(patterns[level]);
-              interface_matrices[m][level].reinit(interface_patterns[level]);
+              assembled[m][level].reinit(owned, owned, dsp, communicator);
+              assembled_interface[m][level].reinit(owned,
+                                                   owned,
+                                                   interface_dsp,
+                                                   communicator);
             }
-          level_constraints[level].reinit(
-            DoFTools::extract_locally_relevant_level_dofs(dof_handler, level));
+          level_constraints[level].reinit(relevant);
           level_constraints[level].add_lines(
             mg_constrained_dofs.get_refinement_edge_indices(level));
           level_constraints[level].add_lines(
@@ -155,14 +194,17 @@ namespace rsfcycle
           level_constraints[level].close();
         }
 
-      // Assembly on every cell of every level.
+      // Assembly on the rank's cells of every level.
       const unsigned int n_cell_dofs = dof_handler.get_fe().n_dofs_per_cell();
-      std::array<FullMatrix<double>, 3> cell({FullMatrix<double>(n_cell_dofs),
+      std::array<FullMatrix<double>, 3> cell{{FullMatrix<double>(n_cell_dofs),
                                               FullMatrix<double>(n_cell_dofs),
-                                              FullMatrix<double>(n_cell_dofs)});
+                                              FullMatrix<double>(n_cell_dofs)}};
+      FullMatrix<double>                cell_interface(n_cell_dofs);
       std::vector<types::global_dof_index> indices(n_cell_dofs);
       for (const auto &level_cell : dof_handler.mg_cell_iterators())
         {
+          if (!level_cell->is_locally_owned_on_level())
+            continue;
           const unsigned int level = level_cell->level();
           for (auto &matrix : cell)
             matrix = 0;
@@ -171,22 +213,40 @@ namespace rsfcycle
           for (unsigned int m = 0; m < 3; ++m)
             {
               level_constraints[level].distribute_local_to_global(
-                cell[m], indices, level_matrices[m][level]);
+                cell[m], indices, assembled[m][level]);
+              cell_interface = 0;
               for (unsigned int i = 0; i < n_cell_dofs; ++i)
                 for (unsigned int j = 0; j < n_cell_dofs; ++j)
                   if (mg_constrained_dofs.is_interface_matrix_entry(level,
                                                                     indices[i],
                                                                     indices[j]))
-                    interface_matrices[m][level].add(indices[i],
-                                                     indices[j],
-                                                     cell[m](i, j));
+                    cell_interface(i, j) = cell[m](i, j);
+              assembled_interface[m][level].add(indices, cell_interface);
             }
         }
+      for (unsigned int level = 0; level < n_levels; ++level)
+        for (unsigned int m = 0; m < 3; ++m)
+          {
+            assembled[m][level].compress(VectorOperation::add);
+            assembled_interface[m][level].compress(VectorOperation::add);
+            level_matrices[m][level].initialize(assembled[m][level],
+                                                level_partitioners[level]);
+            interface_matrices[m][level].initialize(
+              assembled_interface[m][level], level_partitioners[level]);
+          }
 
-      // The contact blocks on every level, with the level's lumped weights.
-      std::map<unsigned int, unsigned int> node_of_vertex;
+      // The contact blocks on every level, with the level's lumped weights
+      // (contact nodes found by position: vertex numbers differ between
+      // ranks).
+      const auto less = [](const Point<dim> &a, const Point<dim> &b) {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (a[d] != b[d])
+            return a[d] < b[d];
+        return false;
+      };
+      std::map<Point<dim>, unsigned int, decltype(less)> node_at(less);
       for (unsigned int k = 0; k < contact_vertices.size(); ++k)
-        node_of_vertex[contact_vertices[k].vertex] = k;
+        node_at[contact_vertices[k].position] = k;
       contact_blocks.assign(n_levels, {});
       std::vector<std::map<unsigned int, double>> level_weight(n_levels);
       for (const auto &level_cell : dof_handler.mg_cell_iterators())
@@ -201,7 +261,10 @@ namespace rsfcycle
           }
       for (const auto &level_cell : dof_handler.mg_cell_iterators())
         {
+          if (!level_cell->is_locally_owned_on_level())
+            continue;
           const unsigned int level = level_cell->level();
+          const auto        &owned = dof_handler.locally_owned_mg_dofs(level);
           for (const unsigned int f : level_cell->face_indices())
             {
               const auto face = level_cell->face(f);
@@ -209,8 +272,8 @@ namespace rsfcycle
                 continue;
               for (const unsigned int v : face->vertex_indices())
                 {
-                  const auto found = node_of_vertex.find(face->vertex_index(v));
-                  if (found == node_of_vertex.end())
+                  const auto found = node_at.find(face->vertex(v));
+                  if (found == node_at.end())
                     continue; // hanging on the active mesh: no friction data
                   const ContactVertex &cv = contact_vertices[found->second];
                   LevelContactBlock    block;
@@ -222,10 +285,15 @@ namespace rsfcycle
                     {
                       const auto dof =
                         face->mg_vertex_dof_index(level, v, cv.components[c]);
-                      if (mg_constrained_dofs.is_boundary_index(level, dof) ||
+                      if (!owned.is_element(dof) ||
+                          mg_constrained_dofs.is_boundary_index(level, dof) ||
                           mg_constrained_dofs.at_refinement_edge(level, dof))
-                        usable = false;
-                      block.dofs[block.n_dofs++] = dof;
+                        {
+                          usable = false;
+                          break;
+                        }
+                      block.dofs[block.n_dofs++] =
+                        level_partitioners[level]->global_to_local(dof);
                     }
                   if (!usable)
                     continue;
@@ -237,6 +305,9 @@ namespace rsfcycle
                 }
             }
         }
+      this->first_node = first_node;
+      node_data.resize(contact_vertices.size());
+      own_data.reserve(5 * contact_vertices.size());
     }
 
 
@@ -249,7 +320,7 @@ namespace rsfcycle
     MultigridCorrection<dim>::level_sizes() const
     {
       std::vector<types::global_dof_index> sizes;
-      for (unsigned int l = 0; l < patterns.n_levels(); ++l)
+      for (unsigned int l = 0; l < n_levels; ++l)
         sizes.push_back(dof_handler.n_dofs(l));
       return sizes;
     }
@@ -265,39 +336,31 @@ namespace rsfcycle
       if (cache.size() >= 4)
         cache.erase(cache.begin());
 
-      auto ops                            = std::make_unique<LevelOperators>();
-      ops->key                            = key;
-      const std::array<double, 3> c       = coefficients(key);
-      const unsigned int          n_level = patterns.n_levels();
-      ops->matrices.resize(0, n_level - 1);
-      ops->interface.resize(0, n_level - 1);
-      ops->original.resize(n_level);
-      for (unsigned int level = 0; level < n_level; ++level)
+      auto ops                      = std::make_unique<LevelOperators>();
+      ops->key                      = key;
+      const std::array<double, 3> c = coefficients(key);
+      ops->local_matrices.resize(0, n_levels - 1);
+      ops->local_interface.resize(0, n_levels - 1);
+      ops->original.resize(n_levels);
+      for (unsigned int level = 0; level < n_levels; ++level)
         {
-          ops->matrices[level].reinit(patterns[level]);
-          ops->interface[level].reinit(interface_patterns[level]);
-          for (unsigned int m = 0; m < 3; ++m)
-            if (c[m] != 0)
-              {
-                ops->matrices[level].add(c[m], level_matrices[m][level]);
-                ops->interface[level].add(c[m], interface_matrices[m][level]);
-              }
+          ops->local_matrices[level].combine(
+            {{c[0], &level_matrices[0][level]},
+             {c[1], &level_matrices[1][level]},
+             {c[2], &level_matrices[2][level]}});
+          ops->local_interface[level].combine(
+            {{c[0], &interface_matrices[0][level]},
+             {c[1], &interface_matrices[1][level]},
+             {c[2], &interface_matrices[2][level]}});
           for (const auto &block : contact_blocks[level])
             {
               std::array<double, 4> d{};
               for (unsigned int i = 0; i < block.n_dofs; ++i)
                 for (unsigned int j = 0; j < block.n_dofs; ++j)
                   d[block.n_dofs * i + j] =
-                    ops->matrices[level].el(block.dofs[i], block.dofs[j]);
+                    ops->local_matrices[level].el(block.dofs[i], block.dofs[j]);
               ops->original[level].push_back(d);
             }
-        }
-      ops->local_matrices.resize(0, n_level - 1);
-      ops->local_interface.resize(0, n_level - 1);
-      for (unsigned int level = 0; level < n_level; ++level)
-        {
-          ops->local_matrices[level].initialize(ops->matrices[level]);
-          ops->local_interface[level].initialize(ops->interface[level]);
         }
       ops->mg_matrix.initialize(ops->local_matrices);
       ops->mg_interface_up.initialize(ops->local_interface);
@@ -332,21 +395,56 @@ namespace rsfcycle
       LevelOperators              &ops,
       const TruncatedNewtonSystem &system)
     {
+      // The truncation and Hessian of every rank's contact nodes: a level
+      // dof may belong to another rank than the node's active dofs.
+      const ContactSet &contact = *system.contact;
+      own_data.clear();
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          own_data.push_back(
+            (*system.truncated)[contact.nodes[k].dofs[0]] ? 1. : 0.);
+          for (unsigned int i = 0; i < 4; ++i)
+            own_data.push_back((*system.node_hessians)[k][i]);
+        }
+      std::vector<double> all;
+      if (Utilities::MPI::n_mpi_processes(communicator) == 1)
+        all = own_data;
+      else
+        for (const auto &part :
+             Utilities::MPI::all_gather(communicator, own_data))
+          all.insert(all.end(), part.begin(), part.end());
+      for (unsigned int k = 0; k < node_data.size(); ++k)
+        for (unsigned int i = 0; i < 5; ++i)
+          node_data[k][i] = all[5 * k + i];
+
       for (unsigned int level = 0; level < contact_blocks.size(); ++level)
         for (unsigned int b = 0; b < contact_blocks[level].size(); ++b)
           {
             const LevelContactBlock     &block = contact_blocks[level][b];
             const std::array<double, 4> &d     = ops.original[level][b];
+            const std::array<double, 5> &data  = node_data[block.node];
             const unsigned int           n     = block.n_dofs;
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = 0; j < n; ++j)
-                ops.matrices[level].set(
-                  block.dofs[i],
-                  block.dofs[j],
-                  contact_block_entry(
-                    system, block.node, i, j, d[n * i + j], block.scale));
+                ops.local_matrices[level].entry(block.dofs[i], block.dofs[j]) =
+                  (data[0] != 0) ?
+                    ((i == j) ? d[n * i + j] * (1. + truncation_penalty) :
+                                d[n * i + j]) :
+                    d[n * i + j] + block.scale * data[1 + n * i + j];
           }
-      ops.coarse_matrix.copy_from(ops.matrices[0]);
+
+      // the coarse matrix, whole on every rank
+      const la::LocalMatrix &coarse = ops.local_matrices[0];
+      const unsigned int     n0     = dof_handler.n_dofs(0);
+      ops.coarse_matrix.reinit(n0, n0);
+      for (unsigned int row = 0; row < coarse.m(); ++row)
+        for (unsigned int j = coarse.row_begin(row); j < coarse.row_end(row);
+             ++j)
+          ops.coarse_matrix(coarse.global_column(row),
+                            coarse.global_column(coarse.column(j))) =
+            coarse.value(j);
+      if (Utilities::MPI::n_mpi_processes(communicator) > 1)
+        Utilities::MPI::sum(ops.coarse_matrix, communicator, ops.coarse_matrix);
       ops.coarse.initialize(ops.coarse_matrix);
     }
 

@@ -20,12 +20,13 @@ namespace rsfcycle
           const auto        &H    = (*system.node_hessians)[k];
           for (unsigned int i = 0; i < node.n_dofs; ++i)
             for (unsigned int j = 0; j < node.n_dofs; ++j)
-              y[node.dofs[i]] += H[node.n_dofs * i + j] * x[node.dofs[j]];
+              y.local_element(node.dofs[i]) +=
+                H[node.n_dofs * i + j] * x.local_element(node.dofs[j]);
         }
       const std::vector<bool> &truncated = *system.truncated;
-      for (dealii::types::global_dof_index i = 0; i < y.size(); ++i)
+      for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
         if (truncated[i])
-          y[i] = 0;
+          y.local_element(i) = 0;
     }
 
 
@@ -38,9 +39,9 @@ namespace rsfcycle
     {
       const std::vector<bool> &truncated = *system.truncated;
       const auto               project   = [&](la::Vector &w) {
-        for (dealii::types::global_dof_index i = 0; i < w.size(); ++i)
+        for (unsigned int i = 0; i < w.locally_owned_size(); ++i)
           if (truncated[i])
-            w[i] = 0;
+            w.local_element(i) = 0;
       };
       if (r.size() != rhs.size())
         {

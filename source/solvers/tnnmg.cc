@@ -1,12 +1,13 @@
 #include <cmath>
 #include <cstdlib>
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
 #include <rsfcycle/solvers/tnnmg.h>
 
 namespace rsfcycle
 {
   namespace solvers
   {
-    using dealii::SparseMatrix;
     using dealii::Vector;
 
     namespace
@@ -55,9 +56,11 @@ namespace rsfcycle
     {
       // rows and columns in the vectors' local numbering (the global one
       // on one rank)
-      const la::LocalMatrix   &A       = *problem.local_A;
-      const double            *r       = problem.rhs->begin();
-      double                  *x       = v.begin();
+      const la::LocalMatrix &A = *problem.local_A;
+      const double          *r = problem.rhs->begin();
+      // the other ranks' entries as of the last sweep (hybrid
+      // Gauss-Seidel/Jacobi across ranks)
+      double                  *x       = const_cast<double *>(A.ghosted(v));
       const std::vector<bool> &fixed   = *problem.fixed;
       const ContactSet        &contact = *problem.contact;
 
@@ -153,18 +156,21 @@ namespace rsfcycle
       problem.local_A->vmult(Ac, c);
       const double      cAc     = c * Ac;
       const ContactSet &contact = *problem.contact;
+      const MPI_Comm    comm    = v.get_partitioner()->get_mpi_communicator();
+      const bool distributed    = v.get_partitioner()->n_mpi_processes() > 1;
 
-      // D(t) and, where every node moves off 0, D'(t) (else NaN)
+      // D(t) and, where every node moves off 0, D'(t) (else NaN); the
+      // friction part summed over the nodes of all ranks
       const auto derivatives = [&](const double t) {
-        std::array<double, 2> value = {{c_residual + t * cAc, cAc}};
+        std::array<double, 2> value = {{0., 0.}};
         for (unsigned int n = 0; n < contact.nodes.size(); ++n)
           {
             const ContactNode    &node = contact.nodes[n];
             std::array<double, 2> y{}, cn{};
             for (unsigned int k = 0; k < node.n_dofs; ++k)
               {
-                cn[k] = c[node.dofs[k]];
-                y[k]  = v[node.dofs[k]] + t * cn[k];
+                cn[k] = c.local_element(node.dofs[k]);
+                y[k]  = v.local_element(node.dofs[k]) + t * cn[k];
               }
             const double c_norm = std::hypot(cn[0], cn[1]);
             if (c_norm == 0)
@@ -184,6 +190,13 @@ namespace rsfcycle
             value[1] += cn[0] * (hess[0] * cn[0] + hess[1] * cn[1]) +
                         cn[1] * (hess[2] * cn[0] + hess[3] * cn[1]);
           }
+        if (distributed)
+          dealii::Utilities::MPI::sum(
+            dealii::ArrayView<const double>(value.data(), 2),
+            comm,
+            dealii::ArrayView<double>(value.data(), 2));
+        value[0] += c_residual + t * cAc;
+        value[1] += cAc;
         return value;
       };
 
@@ -222,21 +235,19 @@ namespace rsfcycle
     TNNMG::truncate_and_linearise(const SpatialProblem &problem,
                                   const la::Vector     &v)
     {
-      const SparseMatrix<double> &A       = *problem.A;
-      const std::vector<bool>    &fixed   = *problem.fixed;
-      const ContactSet           &contact = *problem.contact;
-      const auto                 &phis    = *problem.potentials;
-      const global_dof_index      n       = v.size();
+      const la::LocalMatrix   &A       = *problem.local_A;
+      const std::vector<bool> &fixed   = *problem.fixed;
+      const ContactSet        &contact = *problem.contact;
+      const auto              &phis    = *problem.potentials;
       problem.local_A->residual(residual, v, *problem.rhs); // r - A v
-      for (global_dof_index i = 0; i < n; ++i)
-        truncated[i] = fixed[i];
+      truncated  = fixed;
       newton_rhs = residual;
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         {
           const ContactNode    &node = contact.nodes[k];
           std::array<double, 2> y{}, grad{};
           for (unsigned int l = 0; l < node.n_dofs; ++l)
-            y[l] = v[node.dofs[l]];
+            y[l] = v.local_element(node.dofs[l]);
           friction_gradient_and_hessian(
             phis[k], y, node.n_dofs, grad, hessians[k]);
           double max_hessian = 0, max_diagonal = 0;
@@ -244,8 +255,7 @@ namespace rsfcycle
             {
               max_hessian =
                 std::max(max_hessian, hessians[k][node.n_dofs * l + l]);
-              max_diagonal =
-                std::max(max_diagonal, A.diag_element(node.dofs[l]));
+              max_diagonal = std::max(max_diagonal, A.diagonal(node.dofs[l]));
             }
           const bool stuck =
             (y[0] == 0 && y[1] == 0) ||
@@ -253,14 +263,14 @@ namespace rsfcycle
           for (unsigned int l = 0; l < node.n_dofs; ++l)
             {
               truncated[node.dofs[l]] = stuck;
-              newton_rhs[node.dofs[l]] -= grad[l];
+              newton_rhs.local_element(node.dofs[l]) -= grad[l];
             }
           if (stuck)
             hessians[k] = {{0., 0., 0., 0.}};
         }
-      for (global_dof_index i = 0; i < n; ++i)
+      for (unsigned int i = 0; i < newton_rhs.locally_owned_size(); ++i)
         if (truncated[i])
-          newton_rhs[i] = 0;
+          newton_rhs.local_element(i) = 0;
     }
 
 
@@ -287,9 +297,7 @@ namespace rsfcycle
                  la::Vector           &v,
                  const double          tolerance)
     {
-      const SparseMatrix<double> &A       = *problem.A;
-      const ContactSet           &contact = *problem.contact;
-      const global_dof_index      n       = v.size();
+      const ContactSet &contact = *problem.contact;
 
       residual.reinit(v);
       newton_rhs.reinit(v);
@@ -303,7 +311,7 @@ namespace rsfcycle
       // costs no matrix product
       Av.reinit(v);
       problem.local_A->vmult(Av, v);
-      truncated.assign(n, false);
+      truncated.assign(problem.fixed->size(), false);
       hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
 
       TNNMGStatistics stats;
@@ -329,7 +337,7 @@ namespace rsfcycle
           // 3. Linear correction.
           auto                  scope = section("TNNMG: linear correction");
           TruncatedNewtonSystem system;
-          system.A             = &A;
+          system.assembled_A   = problem.assembled_A;
           system.local_A       = problem.local_A;
           system.contact       = &contact;
           system.node_hessians = &hessians;
@@ -338,9 +346,10 @@ namespace rsfcycle
           correction_vector    = 0;
           stats.linear_iterations +=
             correction.solve(system, newton_rhs, correction_vector);
-          for (global_dof_index i = 0; i < n; ++i)
+          for (unsigned int i = 0; i < correction_vector.locally_owned_size();
+               ++i)
             if (truncated[i])
-              correction_vector[i] = 0;
+              correction_vector.local_element(i) = 0;
 
           // 4. Line search.
           scope.reset();

@@ -35,7 +35,7 @@ namespace rsfcycle
       tmp.add(tau / 2, old.v);
       la::Vector Ku;
       Ku.reinit(rhs);
-      discretisation.local(discretisation.stiffness_matrix).vmult(Ku, tmp);
+      discretisation.stiffness_local.vmult(Ku, tmp);
       rhs -= Ku;
       if (solver.dynamics == "dynamic")
         {
@@ -43,7 +43,7 @@ namespace rsfcycle
           tmp.add(2. / tau, old.v);
           la::Vector Mv;
           Mv.reinit(rhs);
-          discretisation.local(discretisation.mass_matrix).vmult(Mv, tmp);
+          discretisation.mass_local.vmult(Mv, tmp);
           rhs += Mv;
         }
       return rhs;
@@ -57,20 +57,24 @@ namespace rsfcycle
                                  const double     tau,
                                  const BodyState *guess)
     {
-      const SparseMatrix<double> &A =
-        discretisation.step_matrix(tau, solver.dynamics == "dynamic");
-      const la::Vector rhs = right_hand_side(old, tau);
+      const bool             dynamic = solver.dynamics == "dynamic";
+      const la::LocalMatrix &A       = discretisation.step_matrix(tau, dynamic);
+      const la::Vector       rhs     = right_hand_side(old, tau);
 
       BodyState next;
       next.v = guess ? guess->v : old.v;
       discretisation.set_fixed_values(next.v, t + tau);
+      next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
 
       std::vector<friction::NodePotential> potentials =
         contact.potentials(cohesion);
       solvers::SpatialProblem problem;
-      problem.A          = &A;
-      problem.local_A    = &discretisation.local(A);
+      problem.local_A     = &A;
+      problem.assembled_A = [this, tau, dynamic]() -> const auto &
+      {
+        return discretisation.assembled_step_matrix(tau, dynamic);
+      };
       problem.rhs        = &rhs;
       problem.fixed      = &discretisation.fixed;
       problem.contact    = &contact.contact_set();
@@ -200,7 +204,8 @@ namespace rsfcycle
           for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
             {
               const auto dof = nodes[k].dofs[l];
-              vm[l] = (1 - weight_new) * old.v[dof] + weight_new * v_new[dof];
+              vm[l]          = (1 - weight_new) * old.v.local_element(dof) +
+                      weight_new * v_new.local_element(dof);
             }
           alpha[k] = friction::update_state(state_law,
                                             contact.nodes()[k].params,
@@ -233,13 +238,14 @@ namespace rsfcycle
 
     template <int dim>
     bool
-    NewmarkStep<dim>::complete(const BodyState            &old,
-                               const SparseMatrix<double> &A,
-                               const la::Vector           &rhs,
-                               const double                t,
-                               const double                tau,
-                               BodyState                  &next)
+    NewmarkStep<dim>::complete(const BodyState       &old,
+                               const la::LocalMatrix &A,
+                               const la::Vector      &rhs,
+                               const double           t,
+                               const double           tau,
+                               BodyState             &next)
     {
+      next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
       next.u = old.u;
       next.u.add(tau / 2, old.v, tau / 2, next.v);
@@ -258,13 +264,14 @@ namespace rsfcycle
       const unsigned int n_nodes = nodes.size();
       la::Vector         residual;
       residual.reinit(rhs);
-      discretisation.local(A).residual(residual, next.v, rhs);
+      A.residual(residual, next.v, rhs);
       next.shear_traction.resize(n_nodes);
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
           double f2 = 0;
           for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
-            f2 += residual[nodes[k].dofs[l]] * residual[nodes[k].dofs[l]];
+            f2 += residual.local_element(nodes[k].dofs[l]) *
+                  residual.local_element(nodes[k].dofs[l]);
           next.shear_traction[k] = std::sqrt(f2) / contact.nodes()[k].weight;
         }
 
@@ -277,15 +284,21 @@ namespace rsfcycle
                     first_non_finite(next.v);
           return false;
         }
-      for (unsigned int k = 0; k < n_nodes; ++k)
+      // every rank must reject the step alike
+      std::string bad_state;
+      for (unsigned int k = 0; k < n_nodes && bad_state.empty(); ++k)
         if (!std::isfinite(next.alpha[k]))
-          {
-            failure = "t = " + format_number(t + tau) +
-                      " s: non-finite friction state at the base node at s = " +
-                      format_number(along_base(contact.nodes()[k].position)) +
-                      " m";
-            return false;
-          }
+          bad_state = format_number(along_base(contact.nodes()[k].position));
+      const MPI_Comm comm = rhs.get_partitioner()->get_mpi_communicator();
+      if (dealii::Utilities::MPI::max(bad_state.empty() ? 0 : 1, comm) > 0)
+        {
+          failure = "t = " + format_number(t + tau) +
+                    " s: non-finite friction state" +
+                    (bad_state.empty() ?
+                       std::string(" on another rank") :
+                       " at the base node at s = " + bad_state + " m");
+          return false;
+        }
       return true;
     }
 
@@ -307,14 +320,14 @@ namespace rsfcycle
       const auto &nodes = contact.contact_set().nodes;
       for (unsigned int k = 0; k < nodes.size(); ++k)
         for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
-          if (!std::isfinite(v[nodes[k].dofs[l]]))
+          if (!std::isfinite(v.local_element(nodes[k].dofs[l])))
             return "non-finite slip rate at the base node at s = " +
                    format_number(along_base(contact.nodes()[k].position)) +
                    " m";
-      for (types::global_dof_index i = 0; i < v.size(); ++i)
-        if (!std::isfinite(v[i]))
+      for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+        if (!std::isfinite(v.local_element(i)))
           return "non-finite velocity in the interior (dof " +
-                 std::to_string(i) + ")";
+                 std::to_string(v.get_partitioner()->local_to_global(i)) + ")";
       return "all velocities finite";
     }
 

@@ -8,12 +8,15 @@
 // Scene = spring-slider: a digest of the spring-slider run instead (event
 // count, recurrence time, slip per cycle / (v0 T), peak log10(V/v0), final
 // state against steady sliding), see run_spring_slider().
+// Under mpirun (NAME.mpirun=N.output) every rank runs and the first writes
+// the digest.
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/registry.h>
@@ -52,6 +55,14 @@ namespace
     std::ostringstream         log;
     rsfcycle::ProblemBase<dim> problem(parameters, *scene, log);
     problem.run(prm);
+    // the contact nodes of all ranks
+    double total = 0;
+    for (const auto &node : problem.contact_nodes())
+      total += node.normal_force;
+    total = dealii::Utilities::MPI::sum(total, MPI_COMM_WORLD);
+    // the first rank has the log and the files of the run folder
+    if (!rsfcycle::output::is_root())
+      return;
     std::cout << log.str();
 
     std::istringstream lines(log.str());
@@ -61,9 +72,6 @@ namespace
           line.rfind("Summary:", 0) == 0)
         out << line << "\n";
 
-    double total = 0;
-    for (const auto &node : problem.contact_nodes())
-      total += node.normal_force;
     out << "sum of contact normal forces [N/m^(3-dim)]: " << total << "\n";
 
     const double v0 = scene->convergence_rate();
@@ -224,7 +232,7 @@ main(int argc, char **argv)
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);
 
-      std::ofstream out("output");
+      std::ostringstream out;
       out << std::setprecision(8);
       if (parameters.run.scene == "spring-slider")
         run_spring_slider(parameters, prm, out);
@@ -232,6 +240,8 @@ main(int argc, char **argv)
         run<2>(parameters, prm, out);
       else
         run<3>(parameters, prm, out);
+      if (rsfcycle::output::is_root())
+        std::ofstream("output") << out.str();
     }
   catch (std::exception &exc)
     {

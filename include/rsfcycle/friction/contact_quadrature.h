@@ -2,6 +2,8 @@
 #define rsfcycle_friction_contact_quadrature_h
 
 #include <array>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -44,15 +46,17 @@ namespace rsfcycle
       };
 
       /**
-       * The contact nodes of the faces with boundary id `contact`, with the
-       * friction parameters given by `parameters_at` at each node's
-       * position. `fixed` marks the dofs that are not unknowns.
+       * The contact nodes of the faces with boundary id `contact` whose
+       * dofs this rank owns, with the friction parameters given by
+       * `parameters_at` at each node's position. `fixed` marks the dofs
+       * (by local index of `partitioner`) that are not unknowns.
        */
       void
-      setup(const DoFHandler<dim>           &dof_handler,
-            const DoFHandler<dim>           &scalar_dof_handler,
-            const AffineConstraints<double> &hanging_constraints,
-            const std::vector<bool>         &fixed,
+      setup(const DoFHandler<dim>             &dof_handler,
+            const DoFHandler<dim>             &scalar_dof_handler,
+            const AffineConstraints<double>   &hanging_constraints,
+            const Utilities::MPI::Partitioner &partitioner,
+            const std::vector<bool>           &fixed,
             const std::function<Parameters(const Point<dim> &)> &parameters_at);
 
       /**
@@ -63,7 +67,7 @@ namespace rsfcycle
       unsigned int
       set_normal_forces(const la::Vector &reaction);
 
-      /** The state distance (14) between two states. */
+      /** The state distance (14) between two states (all ranks). */
       double
       state_distance(const std::vector<double> &alpha1,
                      const std::vector<double> &alpha2) const;
@@ -96,16 +100,61 @@ namespace rsfcycle
         return contact;
       }
 
+      /** The contact nodes of this rank. */
       unsigned int
       n_nodes() const
       {
         return node_info.size();
       }
 
+      /** The contact nodes of all ranks. */
+      unsigned int
+      n_global_nodes() const
+      {
+        return order.size();
+      }
+
+      /**
+       * A value per node of this rank, gathered from all ranks onto every
+       * rank in the order of the nodes' positions (lexicographic in the
+       * coordinates, x first, the last coordinate last), which does not
+       * depend on the number of ranks.
+       */
+      template <typename T>
+      std::vector<T>
+      gather(const std::vector<T> &local) const
+      {
+        std::vector<T> all;
+        if (n_ranks == 1)
+          all = local;
+        else
+          for (auto &part : Utilities::MPI::all_gather(communicator, local))
+            all.insert(all.end(), part.begin(), part.end());
+        std::vector<T> sorted(all.size());
+        for (unsigned int k = 0; k < order.size(); ++k)
+          sorted[k] = all[order[k]];
+        return sorted;
+      }
+
+      /**
+       * Where this rank's nodes start in the nodes of all ranks listed
+       * rank by rank (the order of all_gather before sorting).
+       */
+      unsigned int
+      first_global_node() const
+      {
+        return first_node;
+      }
+
     private:
       solvers::ContactSet   contact;
       std::vector<NodeInfo> node_info;
-      double                area = 0;
+      double                area         = 0;
+      MPI_Comm              communicator = MPI_COMM_SELF;
+      unsigned int          n_ranks      = 1;
+      unsigned int          first_node   = 0;
+      /** Sorted position k -> index in the rank-by-rank list. */
+      std::vector<unsigned int> order;
     };
   } // namespace friction
 } // namespace rsfcycle

@@ -14,6 +14,25 @@ namespace rsfcycle
      * std::strerror(error) ("No space left on device", "File too large").
      * main() prints it as one line.
      */
+    /**
+     * Whether this process writes the run's shared files (log, CSVs,
+     * parameters, PVD records, checkpoint): the first MPI rank, or the only
+     * process when MPI is not started.
+     */
+    bool
+    is_root();
+
+    /** The largest value over the MPI ranks (the value if MPI is off). */
+    int
+    max_over_ranks(int value);
+
+    /** Whether the condition holds on some MPI rank. */
+    inline bool
+    on_any_rank(const bool condition)
+    {
+      return max_over_ranks(condition ? 1 : 0) > 0;
+    }
+
     std::runtime_error
     file_error(const std::string &path, int error);
 

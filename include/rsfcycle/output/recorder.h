@@ -5,6 +5,7 @@
 #include <fstream>
 #include <rsfcycle/output/csv_row.h>
 #include <rsfcycle/output/events.h>
+#include <rsfcycle/output/files.h>
 #include <rsfcycle/time/model.h>
 #include <string>
 #include <vector>
@@ -90,8 +91,10 @@ namespace rsfcycle
 
       std::array<std::string, 3> paths; // of series, profile, catalogue
       std::ofstream              series, profile, catalogue;
-      CsvRow                     series_row{10}, profile_row{8};
-      std::vector<unsigned int>  order; // node order along the base
+      /** Whether this process writes the files (the first rank). */
+      bool                      writing = is_root();
+      CsvRow                    series_row{10}, profile_row{8};
+      std::vector<unsigned int> order; // node order along the base
     };
   } // namespace output
 } // namespace rsfcycle

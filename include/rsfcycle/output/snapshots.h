@@ -44,7 +44,7 @@ namespace rsfcycle
       void
       serialize(Archive &ar, const unsigned int)
       {
-        ar &n_snapshots &records;
+        ar &n_snapshots &records &fault_records;
       }
 
     private:
@@ -59,12 +59,17 @@ namespace rsfcycle
       std::vector<la::Vector>
       base_fields(const BodyState &state) const;
 
+      /** Write a DataOut(Faces) as one file per rank (and a .pvtu). */
+      template <class Writer>
+      std::string
+      write_pieces(const Writer &writer, const std::string &stem) const;
+
       const std::string                       dir;
       const physics::Discretisation<dim>     &discretisation;
       const friction::ContactQuadrature<dim> &contact;
       const double                            v0;
 
-      std::vector<std::pair<double, std::string>> records;
+      std::vector<std::pair<double, std::string>> records, fault_records;
       unsigned int                                n_snapshots = 0;
     };
   } // namespace output

@@ -10,8 +10,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
 #include <rsfcycle/la.h>
@@ -90,32 +89,45 @@ namespace rsfcycle
       std::pair<la::Vector, la::Vector>
       gravity_equilibrium();
 
-      /** Prescribed values of the fixed dofs at time t (backstop). */
       /** v as a zero vector on the dofs' partitioner (owned, ghosts). */
       void
       reinit(la::Vector &v) const;
 
+      /** Prescribed values of the fixed dofs at time t (backstop). */
       void
       set_fixed_values(la::Vector &v, double t) const;
 
       /**
        * The step matrix A = 2/tau M + C + tau/2 K (quasi-static: without
-       * M), kept for the last few step sizes.
+       * M) in the rank's rows, kept for the last few step sizes.
        */
-      const SparseMatrix<double> &
+      const la::LocalMatrix &
       step_matrix(double tau, bool dynamic);
 
       /**
-       * The rank's rows of a matrix of this discretisation (mass,
-       * stiffness or a cached step matrix) for the kernels on distributed
-       * vectors.
+       * The same step matrix assembled as a Trilinos matrix (for algebraic
+       * multigrid), built at the first request.
        */
-      const la::LocalMatrix &
-      local(const SparseMatrix<double> &matrix) const;
+      const TrilinosWrappers::SparseMatrix &
+      assembled_step_matrix(double tau, bool dynamic);
 
-      /** For every FE dof, its vector component. */
+      /** For every locally owned dof, its vector component. */
       std::vector<unsigned int>
       dof_components() const;
+
+      /** Local index (owned, then ghosts) of a global dof index. */
+      unsigned int
+      local_index(const types::global_dof_index i) const
+      {
+        return partitioner->global_to_local(i);
+      }
+
+      /** Whether a global dof index is owned or a ghost on this rank. */
+      bool
+      is_local(const types::global_dof_index i) const
+      {
+        return partitioner->in_local_range(i) || partitioner->is_ghost_entry(i);
+      }
 
       parallel::distributed::Triangulation<dim> triangulation;
       FESystem<dim>                             fe;
@@ -125,31 +137,46 @@ namespace rsfcycle
       AffineConstraints<double>                 hanging_constraints;
       AffineConstraints<double>                 scalar_constraints;
 
-      SparsityPattern      sparsity_pattern;
-      SparseMatrix<double> mass_matrix, viscosity_matrix, stiffness_matrix;
-      la::Vector           body_force;
+      /** M, C and K with the rows of this rank (Trilinos). */
+      TrilinosWrappers::SparseMatrix mass_matrix, viscosity_matrix,
+        stiffness_matrix;
+      /** The same in the rank's rows for the kernels (LocalMatrix). */
+      la::LocalMatrix mass_local, viscosity_local, stiffness_local;
+      la::Vector      body_force;
       /** CG iterations of the last gravity equilibrium. */
       unsigned int gravity_iterations = 0;
-      /** Locally owned and locally relevant dofs of this rank. */
+      /**
+       * Locally owned dofs of this rank and as ghosts the locally relevant
+       * dofs and every column of the owned rows of the matrices.
+       */
       std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+      /** Locally owned and locally relevant dofs of the scalar field. */
+      std::shared_ptr<const Utilities::MPI::Partitioner> scalar_partitioner;
 
-      /** Dofs whose value is prescribed (Dirichlet, hanging nodes). */
+      /**
+       * By local index (owned, then ghosts): whether the value is
+       * prescribed (Dirichlet, hanging nodes).
+       */
       std::vector<bool> fixed;
-      /** Backstop dofs with their component (inhomogeneous Dirichlet). */
-      std::vector<std::pair<types::global_dof_index, unsigned int>>
-        backstop_dofs;
+      /**
+       * Owned backstop dofs (local index) with their component
+       * (inhomogeneous Dirichlet).
+       */
+      std::vector<std::pair<unsigned int, unsigned int>> backstop_dofs;
 
     private:
-      la::LocalMatrix           mass_local, stiffness_local;
       const MeshParameters     &mesh;
       const scenes::Scene<dim> &scene;
 
       struct StepMatrix
       {
-        double                                tau;
-        std::unique_ptr<SparseMatrix<double>> matrix;
-        std::unique_ptr<la::LocalMatrix>      local;
+        double                                          tau;
+        bool                                            dynamic;
+        std::unique_ptr<la::LocalMatrix>                local;
+        std::unique_ptr<TrilinosWrappers::SparseMatrix> assembled;
       };
+      StepMatrix                         &
+      cached_step_matrix(double tau, bool dynamic);
       std::vector<StepMatrix> step_matrices;
     };
   } // namespace physics

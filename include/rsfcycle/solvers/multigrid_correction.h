@@ -2,17 +2,19 @@
 #define rsfcycle_solvers_multigrid_correction_h
 
 #include <array>
+#include <boost/serialization/array.hpp>
 #include <deal.II/base/mg_level_object.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 #include <deal.II/multigrid/mg_transfer.h>
 #include <functional>
 #include <memory>
 #include <rsfcycle/la.h>
+#include <rsfcycle/local_matrix.h>
 #include <rsfcycle/solvers/projected_cg.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <vector>
@@ -72,16 +74,26 @@ namespace rsfcycle
       };
 
       /**
-       * Where contact node k lives: its vertex, the vector components of its
-       * dofs (in the order of ContactNode::dofs) and its lumped weight on
-       * the active mesh.
+       * Where a contact node lives: its vertex' position, the vector
+       * components of its dofs (in the order of ContactNode::dofs) and its
+       * lumped weight on the active mesh. The constructor takes the nodes of
+       * all ranks, rank by rank (each rank's in the order of its
+       * ContactSet).
        */
       struct ContactVertex
       {
-        unsigned int                vertex = 0;
+        dealii::Point<dim>          position;
         std::array<unsigned int, 2> components{};
         unsigned int                n_components = 0;
         double                      weight       = 0;
+
+        /** For gathering over ranks. */
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &position &components &n_components &weight;
+        }
       };
 
       struct Settings
@@ -92,12 +104,14 @@ namespace rsfcycle
 
       /**
        * The DoFHandler must have its level dofs distributed. contact_id is
-       * the boundary that carries the friction.
+       * the boundary that carries the friction; the rank's own contact
+       * nodes start at first_node in contact_vertices.
        */
       MultigridCorrection(const dealii::DoFHandler<dim>        &dof_handler,
                           const std::vector<DirichletBoundary> &dirichlet,
                           dealii::types::boundary_id            contact_id,
                           const std::vector<ContactVertex> &contact_vertices,
+                          unsigned int                      first_node,
                           const CellMatrices               &cell_matrices,
                           const Coefficients               &coefficients,
                           const Settings                   &settings);
@@ -129,21 +143,31 @@ namespace rsfcycle
       dealii::MGConstrainedDoFs              mg_constrained_dofs;
       dealii::MGTransferPrebuilt<la::Vector> transfer;
 
-      dealii::MGLevelObject<dealii::SparsityPattern> patterns,
-        interface_patterns;
-      /** Level M, C, K and their interface (edge) parts. */
-      std::array<dealii::MGLevelObject<dealii::SparseMatrix<double>>, 3>
-        level_matrices, interface_matrices;
+      unsigned int n_levels = 0;
+      MPI_Comm     communicator;
+      /** Owned level dofs and, as ghosts, the columns of their rows. */
+      std::vector<std::shared_ptr<const dealii::Utilities::MPI::Partitioner>>
+        level_partitioners;
+      /** Level M, C, K and their interface (edge) parts, the rank's rows. */
+      std::array<dealii::MGLevelObject<la::LocalMatrix>, 3> level_matrices,
+        interface_matrices;
 
-      /** One contact dof block on one level. */
+      /** One contact dof block on one level (owned level dofs, local). */
       struct LevelContactBlock
       {
-        unsigned int                                   node = 0;
-        std::array<dealii::types::global_dof_index, 2> dofs{};
-        unsigned int                                   n_dofs = 0;
-        double                                         scale  = 1;
+        unsigned int                node = 0; // in contact_vertices
+        std::array<unsigned int, 2> dofs{};
+        unsigned int                n_dofs = 0;
+        double                      scale  = 1;
       };
       std::vector<std::vector<LevelContactBlock>> contact_blocks; // by level
+      unsigned int                                first_node = 0;
+      /**
+       * Per contact node of all ranks: truncated (1/0) and its Hessian
+       * block, gathered per solve.
+       */
+      std::vector<std::array<double, 5>> node_data;
+      std::vector<double>                own_data;
 
       std::vector<std::unique_ptr<LevelOperators>> cache;
       ProjectedCG                                  cg;

@@ -4,8 +4,9 @@
 #include <array>
 #include <cmath>
 #include <deal.II/base/types.h>
-#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <functional>
 #include <rsfcycle/friction/rate_state.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
@@ -20,12 +21,13 @@ namespace rsfcycle
     /**
      * One contact node: the tangential degrees of freedom of one base vertex
      * that are free (1 in 2D; 2 in 3D, or 1 where a 3D base vertex also lies
-     * on a free-slip wall). Its normal component is fixed (u.n = 0).
+     * on a free-slip wall), as local indices of the vectors (a rank has the
+     * nodes whose dofs it owns). Its normal component is fixed (u.n = 0).
      */
     struct ContactNode
     {
-      std::array<global_dof_index, 2> dofs{};
-      unsigned int                    n_dofs = 0;
+      std::array<unsigned int, 2> dofs{};
+      unsigned int                n_dofs = 0;
     };
 
     /**
@@ -35,13 +37,14 @@ namespace rsfcycle
     inline double
     tangential_norm(const ContactNode &node, const la::Vector &v)
     {
-      return node.n_dofs == 1 ? std::abs(v[node.dofs[0]]) :
-                                std::hypot(v[node.dofs[0]], v[node.dofs[1]]);
+      return node.n_dofs == 1 ? std::abs(v.local_element(node.dofs[0])) :
+                                std::hypot(v.local_element(node.dofs[0]),
+                                           v.local_element(node.dofs[1]));
     }
 
     /**
-     * The contact nodes of a mesh and, per degree of freedom, the node it
-     * belongs to (-1 if none). Built once per mesh.
+     * The contact nodes of a rank and, per local index (owned, then
+     * ghosts), the node it belongs to (-1 if none). Built once per mesh.
      */
     struct ContactSet
     {
@@ -49,9 +52,9 @@ namespace rsfcycle
       std::vector<int>         dof_to_node;
 
       void
-      build_index(const global_dof_index n_dofs)
+      build_index(const unsigned int n_local)
       {
-        dof_to_node.assign(n_dofs, -1);
+        dof_to_node.assign(n_local, -1);
         for (unsigned int i = 0; i < nodes.size(); ++i)
           for (unsigned int k = 0; k < nodes[i].n_dofs; ++k)
             dof_to_node[nodes[i].dofs[k]] = static_cast<int>(i);
@@ -67,8 +70,11 @@ namespace rsfcycle
      */
     struct SpatialProblem
     {
-      const dealii::SparseMatrix<double>         *A          = nullptr;
-      const la::LocalMatrix                      *local_A    = nullptr;
+      /** The rank's rows of A. */
+      const la::LocalMatrix *local_A = nullptr;
+      /** A assembled as a Trilinos matrix (algebraic multigrid). */
+      std::function<const dealii::TrilinosWrappers::SparseMatrix &()>
+                                                  assembled_A;
       const la::Vector                           *rhs        = nullptr;
       const std::vector<bool>                    *fixed      = nullptr;
       const ContactSet                           *contact    = nullptr;
@@ -85,11 +91,13 @@ namespace rsfcycle
      */
     struct TruncatedNewtonSystem
     {
-      const dealii::SparseMatrix<double>       *A             = nullptr;
-      const la::LocalMatrix                    *local_A       = nullptr;
+      const la::LocalMatrix *local_A = nullptr;
+      std::function<const dealii::TrilinosWrappers::SparseMatrix &()>
+                                                assembled_A;
       const ContactSet                         *contact       = nullptr;
       const std::vector<std::array<double, 4>> *node_hessians = nullptr;
-      const std::vector<bool>                  *truncated     = nullptr;
+      /** By local index (owned, then ghosts). */
+      const std::vector<bool> *truncated = nullptr;
       /**
        * Identifies the content of A (here: the step size tau), so that a
        * correction may cache what it derives from A. Entries of `truncated`

@@ -155,12 +155,12 @@ namespace rsfcycle
 
       /** u, a, the shear traction and the finiteness checks of `next`. */
       bool
-      complete(const BodyState            &old,
-               const SparseMatrix<double> &A,
-               const la::Vector           &rhs,
-               double                      t,
-               double                      tau,
-               BodyState                  &next);
+      complete(const BodyState       &old,
+               const la::LocalMatrix &A,
+               const la::Vector      &rhs,
+               double                 t,
+               double                 tau,
+               BodyState             &next);
 
       /** Where the first non-finite velocity is (for diagnoses). */
       std::string

@@ -168,20 +168,22 @@ namespace rsfcycle
             const auto now = std::chrono::steady_clock::now();
             report_progress(now);
             const auto &out = parameters.output;
-            const bool  checkpoint_due =
+            // decided alike on every rank (clocks and signals differ)
+            const bool checkpoint_due = output::on_any_rank(
               (out.checkpoint_steps > 0 &&
                s.step % out.checkpoint_steps == 0) ||
               (out.checkpoint_minutes > 0 &&
                std::chrono::duration<double>(now - last_checkpoint).count() >=
-                 60 * out.checkpoint_minutes);
-            if (checkpoint_due || signals.received() != 0)
+                 60 * out.checkpoint_minutes));
+            const int signal = output::max_over_ranks(signals.received());
+            if (checkpoint_due || signal != 0)
               {
                 checkpoint();
                 last_checkpoint = now;
               }
-            if (signals.received() != 0)
+            if (signal != 0)
               {
-                report_stop_signal(signals.received());
+                report_stop_signal(signal);
                 summary.interrupted = true;
                 break;
               }
@@ -223,10 +225,14 @@ namespace rsfcycle
     void
     RunLoop<State>::report_stop_signal(const int signal)
     {
+      const unsigned int n_ranks = model.checkpoint_identity().n_ranks;
+      const std::string  launcher =
+        n_ranks > 1 ? "mpirun -np " + std::to_string(n_ranks) + " " : "";
       log << "Stopped by signal " << signal << " at t = " << loop_state->t
           << " s; "
           << (controller.can_checkpoint() ?
-                "checkpoint written. Continue with: rsfcycle --resume " + dir :
+                "checkpoint written. Continue with: " + launcher +
+                  "rsfcycle --resume " + dir :
                 std::string("this integrator writes no checkpoint"))
           << std::endl;
       timer.print_summary();
@@ -395,7 +401,8 @@ namespace rsfcycle
               << " s\nMax fixed-point iterations per step: "
               << s.max_fixed_point << "\n"
               << events.str();
-      output::write_file(dir + "/summary.txt", summary.str());
+      if (output::is_root())
+        output::write_file(dir + "/summary.txt", summary.str());
       timer.print_summary();
     }
   } // namespace time

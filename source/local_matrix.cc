@@ -1,0 +1,228 @@
+#include <algorithm>
+#include <rsfcycle/local_matrix.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace la
+  {
+    void
+    LocalMatrix::initialize(
+      const dealii::TrilinosWrappers::SparseMatrix &A,
+      const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+        &new_partitioner)
+    {
+      partitioner = new_partitioner;
+      n_rows      = partitioner->locally_owned_size();
+      rowstart.assign(1, 0);
+      colnums.clear();
+      values.clear();
+      for (unsigned int row = 0; row < n_rows; ++row)
+        {
+          const auto global   = partitioner->local_to_global(row);
+          const auto first    = colnums.size();
+          bool       diagonal = false;
+          for (auto it = A.begin(global); it != A.end(global); ++it)
+            {
+              const unsigned int column =
+                partitioner->global_to_local(it->column());
+              colnums.push_back(column);
+              values.push_back(it->value());
+              if (column == row)
+                {
+                  // the diagonal first (the relaxations read it there)
+                  std::swap(colnums[first], colnums.back());
+                  std::swap(values[first], values.back());
+                  diagonal = true;
+                }
+            }
+          if (!diagonal)
+            {
+              // (an interface matrix): a zero diagonal entry, first
+              colnums.insert(colnums.begin() + first, row);
+              values.insert(values.begin() + first, 0.);
+            }
+          rowstart.push_back(colnums.size());
+        }
+    }
+
+
+    void
+    LocalMatrix::combine(
+      const std::vector<std::pair<double, const LocalMatrix *>> &terms)
+    {
+      const LocalMatrix &first = *terms.front().second;
+      partitioner              = first.partitioner;
+      n_rows                   = first.n_rows;
+      rowstart                 = first.rowstart;
+      colnums                  = first.colnums;
+      values.assign(first.values.size(), 0.);
+      for (const auto &[factor, matrix] : terms)
+        if (factor != 0)
+          for (std::size_t j = 0; j < values.size(); ++j)
+            values[j] += factor * matrix->values[j];
+    }
+
+
+    double &
+    LocalMatrix::entry(const unsigned int row, const unsigned int column)
+    {
+      for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
+        if (colnums[j] == column)
+          return values[j];
+      throw std::logic_error("LocalMatrix: no such entry");
+    }
+
+
+    const double *
+    LocalMatrix::ghosted(const Vector &v) const
+    {
+      if (partitioner->n_ghost_indices() == 0)
+        return v.begin();
+      if (v.get_partitioner().get() == partitioner.get())
+        {
+          v.update_ghost_values();
+          return v.begin();
+        }
+      if (buffer.get_partitioner().get() != partitioner.get())
+        buffer.reinit(partitioner);
+      std::copy(v.begin(), v.end(), buffer.begin());
+      buffer.update_ghost_values();
+      return buffer.begin();
+    }
+
+
+    void
+    LocalMatrix::Tvmult_add(Vector &dst, const Vector &src) const
+    {
+      double *d = dst.begin();
+      if (partitioner->n_ghost_indices() > 0)
+        {
+          // contributions to ghost columns go to their owners
+          if (buffer.get_partitioner().get() != partitioner.get())
+            buffer.reinit(partitioner);
+          buffer = 0;
+          buffer.zero_out_ghost_values();
+          d = buffer.begin();
+        }
+      for (unsigned int row = 0; row < n_rows; ++row)
+        {
+          const double s = src.local_element(row);
+          for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
+            d[colnums[j]] += values[j] * s;
+        }
+      if (partitioner->n_ghost_indices() > 0)
+        {
+          buffer.compress(dealii::VectorOperation::add);
+          double *out = dst.begin();
+          for (unsigned int i = 0; i < n_rows; ++i)
+            out[i] += buffer.local_element(i);
+        }
+    }
+
+
+    void
+    LocalMatrix::residual(Vector &dst, const Vector &x, const Vector &b) const
+    {
+      const double *xs = ghosted(x);
+      const double *bs = b.begin();
+      double       *d  = dst.begin();
+      for (unsigned int row = 0; row < n_rows; ++row)
+        {
+          double s = bs[row];
+          for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
+            s -= values[j] * xs[colnums[j]];
+          d[row] = s;
+        }
+    }
+
+
+    double
+    LocalMatrix::matrix_norm_square(const Vector &v) const
+    {
+      const double *x   = ghosted(v);
+      double        sum = 0;
+      for (unsigned int row = 0; row < n_rows; ++row)
+        {
+          double s = 0;
+          for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
+            s += values[j] * x[colnums[j]];
+          sum += s * x[row];
+        }
+      return dealii::Utilities::MPI::sum(sum,
+                                         partitioner->get_mpi_communicator());
+    }
+
+
+    void
+    LocalMatrix::precondition_SOR(Vector       &dst,
+                                  const Vector &src,
+                                  const double  omega) const
+    {
+      std::copy(src.begin(), src.end(), dst.begin());
+      double *d = dst.begin();
+      for (unsigned int row = 0; row < n_rows; ++row)
+        {
+          double s = d[row];
+          // ghost columns are >= n_rows: outside the rank's block
+          for (unsigned int j = rowstart[row] + 1; j < rowstart[row + 1]; ++j)
+            if (colnums[j] < row)
+              s -= values[j] * d[colnums[j]];
+          d[row] = s * omega / values[rowstart[row]];
+        }
+    }
+
+
+    void
+    LocalMatrix::precondition_TSOR(Vector       &dst,
+                                   const Vector &src,
+                                   const double  omega) const
+    {
+      std::copy(src.begin(), src.end(), dst.begin());
+      double *d = dst.begin();
+      for (unsigned int row = n_rows; row-- > 0;)
+        {
+          double s = d[row];
+          for (unsigned int j = rowstart[row] + 1; j < rowstart[row + 1]; ++j)
+            if (colnums[j] > row && colnums[j] < n_rows)
+              s -= values[j] * d[colnums[j]];
+          d[row] = s * omega / values[rowstart[row]];
+        }
+    }
+
+
+    template <bool forward>
+    void
+    LocalMatrix::sweep(Vector &v, const Vector &b, const double omega) const
+    {
+      double    *x         = v.begin();
+      const bool copy_back = partitioner->n_ghost_indices() > 0 &&
+                             v.get_partitioner().get() != partitioner.get();
+      if (copy_back)
+        x = const_cast<double *>(ghosted(v));
+      else if (partitioner->n_ghost_indices() > 0)
+        v.update_ghost_values();
+      const double *bs       = b.begin();
+      const auto    relax_at = [&](const unsigned int row) {
+        double s = bs[row];
+        for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
+          s -= values[j] * x[colnums[j]];
+        x[row] += s * omega / values[rowstart[row]];
+      };
+      if (forward)
+        for (unsigned int row = 0; row < n_rows; ++row)
+          relax_at(row);
+      else
+        for (unsigned int row = n_rows; row-- > 0;)
+          relax_at(row);
+      if (copy_back)
+        std::copy(x, x + n_rows, v.begin());
+    }
+
+
+    template void
+    LocalMatrix::sweep<true>(Vector &, const Vector &, double) const;
+    template void
+    LocalMatrix::sweep<false>(Vector &, const Vector &, double) const;
+  } // namespace la
+} // namespace rsfcycle

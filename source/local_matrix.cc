@@ -134,6 +134,7 @@ namespace rsfcycle
             s -= values[j] * xs[colnums[j]];
           d[row] = s;
         }
+      release(x);
     }
 
 
@@ -149,80 +150,55 @@ namespace rsfcycle
             s += values[j] * x[colnums[j]];
           sum += s * x[row];
         }
+      release(v);
       return dealii::Utilities::MPI::sum(sum,
                                          partitioner->get_mpi_communicator());
     }
 
 
     void
-    LocalMatrix::precondition_SOR(Vector       &dst,
-                                  const Vector &src,
-                                  const double  omega) const
+    LocalMatrix::relax(Vector            &v,
+                       const Vector      &b,
+                       const unsigned int n,
+                       const bool         forward,
+                       const bool         ghosts_zero) const
     {
-      std::copy(src.begin(), src.end(), dst.begin());
-      double *d = dst.begin();
-      for (unsigned int row = 0; row < n_rows; ++row)
+      const bool has_ghosts = partitioner->n_ghost_indices() > 0;
+      const bool own_layout = v.get_partitioner().get() == partitioner.get();
+      double    *x          = v.begin();
+      if (has_ghosts && ghosts_zero)
         {
-          double s = d[row];
-          // ghost columns are >= n_rows: outside the rank's block
-          for (unsigned int j = rowstart[row] + 1; j < rowstart[row + 1]; ++j)
-            if (colnums[j] < row)
-              s -= values[j] * d[colnums[j]];
-          d[row] = s * omega / values[rowstart[row]];
+          if (own_layout)
+            v.zero_out_ghost_values();
+          else
+            {
+              if (buffer.get_partitioner().get() != partitioner.get())
+                buffer.reinit(partitioner);
+              std::copy(v.begin(), v.end(), buffer.begin());
+              buffer.zero_out_ghost_values();
+              x = buffer.begin();
+            }
         }
-    }
-
-
-    void
-    LocalMatrix::precondition_TSOR(Vector       &dst,
-                                   const Vector &src,
-                                   const double  omega) const
-    {
-      std::copy(src.begin(), src.end(), dst.begin());
-      double *d = dst.begin();
-      for (unsigned int row = n_rows; row-- > 0;)
-        {
-          double s = d[row];
-          for (unsigned int j = rowstart[row] + 1; j < rowstart[row + 1]; ++j)
-            if (colnums[j] > row && colnums[j] < n_rows)
-              s -= values[j] * d[colnums[j]];
-          d[row] = s * omega / values[rowstart[row]];
-        }
-    }
-
-
-    template <bool forward>
-    void
-    LocalMatrix::sweep(Vector &v, const Vector &b, const double omega) const
-    {
-      double    *x         = v.begin();
-      const bool copy_back = partitioner->n_ghost_indices() > 0 &&
-                             v.get_partitioner().get() != partitioner.get();
-      if (copy_back)
+      else if (has_ghosts)
         x = const_cast<double *>(ghosted(v));
-      else if (partitioner->n_ghost_indices() > 0)
-        v.update_ghost_values();
       const double *bs       = b.begin();
       const auto    relax_at = [&](const unsigned int row) {
         double s = bs[row];
         for (unsigned int j = rowstart[row]; j < rowstart[row + 1]; ++j)
           s -= values[j] * x[colnums[j]];
-        x[row] += s * omega / values[rowstart[row]];
+        x[row] += s / values[rowstart[row]];
       };
-      if (forward)
-        for (unsigned int row = 0; row < n_rows; ++row)
-          relax_at(row);
-      else
-        for (unsigned int row = n_rows; row-- > 0;)
-          relax_at(row);
-      if (copy_back)
+      for (unsigned int sweep = 0; sweep < n; ++sweep)
+        if (forward)
+          for (unsigned int row = 0; row < n_rows; ++row)
+            relax_at(row);
+        else
+          for (unsigned int row = n_rows; row-- > 0;)
+            relax_at(row);
+      if (x != v.begin())
         std::copy(x, x + n_rows, v.begin());
+      else
+        release(v);
     }
-
-
-    template void
-    LocalMatrix::sweep<true>(Vector &, const Vector &, double) const;
-    template void
-    LocalMatrix::sweep<false>(Vector &, const Vector &, double) const;
   } // namespace la
 } // namespace rsfcycle

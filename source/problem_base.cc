@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/multigrid/mg_tools.h>
 #include <map>
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
@@ -313,6 +314,7 @@ namespace rsfcycle
           value += weight * entries[i];
         values.push_back(value);
       }
+    discretisation.stiffness_local.release(u);
     Utilities::MPI::sum(values,
                         discretisation.triangulation.get_communicator(),
                         values);
@@ -484,6 +486,11 @@ namespace rsfcycle
         for (const auto n : mg->level_sizes())
           log << ' ' << n;
         log << std::endl;
+        if (Utilities::MPI::n_mpi_processes(tria.get_communicator()) > 1)
+          // the cost of a level-by-level cycle over its cost if every level
+          // were split evenly (deal.II's estimate: cells per level and rank)
+          log << "Multigrid workload imbalance over the ranks: "
+              << MGTools::workload_imbalance(tria) << std::endl;
       }
     if (n_tensile_nodes > 0)
       log << "Warning: " << n_tensile_nodes

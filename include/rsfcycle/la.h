@@ -9,6 +9,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace rsfcycle
@@ -70,6 +71,39 @@ namespace rsfcycle
       std::copy(values.begin(), values.end(), v.begin());
     }
 
+    /**
+     * The entries of every rank's `local` concatenated rank by rank, on
+     * every rank (MPI_Allgatherv of raw doubles: deal.II's all_gather
+     * serialises and compresses, which costs more than the gather itself
+     * for the per-iteration node data). T is double or an array of doubles.
+     */
+    template <typename T>
+    std::vector<T>
+    all_gather(const MPI_Comm &comm, const std::vector<T> &local)
+    {
+      static_assert(std::is_trivially_copyable<T>::value &&
+                      sizeof(T) % sizeof(double) == 0,
+                    "gathered as doubles");
+      constexpr int per  = sizeof(T) / sizeof(double);
+      const int     size = dealii::Utilities::MPI::n_mpi_processes(comm);
+      if (size == 1)
+        return local;
+      const int        count = per * static_cast<int>(local.size());
+      std::vector<int> counts(size), offsets(size, 0);
+      MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+      for (int r = 1; r < size; ++r)
+        offsets[r] = offsets[r - 1] + counts[r - 1];
+      std::vector<T> all((offsets.back() + counts.back()) / per);
+      MPI_Allgatherv(local.data(),
+                     count,
+                     MPI_DOUBLE,
+                     all.data(),
+                     counts.data(),
+                     offsets.data(),
+                     MPI_DOUBLE,
+                     comm);
+      return all;
+    }
   } // namespace la
 } // namespace rsfcycle
 

@@ -22,9 +22,12 @@ namespace rsfcycle
      *
      * Ghosts. A kernel that reads other ranks' entries of its argument
      * first brings them in: a vector on the matrix's own partitioner gets
-     * update_ghost_values(); a vector on another partitioner with the same
-     * owned range (the multigrid transfer makes the level vectors) is
-     * copied into a buffer on the matrix's partitioner. The relaxations are
+     * update_ghost_values() (and zero_out_ghost_values() after the
+     * kernel: ghost values are valid inside a kernel only, so that the
+     * vector operations between kernels communicate nothing); a vector on
+     * another partitioner with the same owned range (the multigrid
+     * transfer makes the level vectors) is copied into a buffer on the
+     * matrix's partitioner. The relaxations are
      * processor-local: a sweep reads the other ranks' entries as they were
      * at its start (hybrid Gauss-Seidel/Jacobi); products with the
      * transpose send their contributions to the owners (compress). On one
@@ -157,29 +160,17 @@ namespace rsfcycle
       matrix_norm_square(const Vector &v) const;
 
       /**
-       * dst = (D/omega + L)^{-1} src (deal.II's precondition_SOR) with the
-       * rank's block of L.
+       * n Gauss-Seidel sweeps over the rank's rows (forward or backward),
+       * reading the other ranks' entries of v as they are on entry (one
+       * exchange), or as zero if `ghosts_zero` (no exchange: v starts at
+       * zero).
        */
       void
-      precondition_SOR(Vector &dst, const Vector &src, double omega) const;
-
-      /** dst = (D/omega + U)^{-1} src with the rank's block of U. */
-      void
-      precondition_TSOR(Vector &dst, const Vector &src, double omega) const;
-
-      /** One forward sweep v += omega D^{-1} (b - A v) (SOR_step). */
-      void
-      SOR_step(Vector &v, const Vector &b, double omega) const
-      {
-        sweep<true>(v, b, omega);
-      }
-
-      /** One backward sweep (TSOR_step). */
-      void
-      TSOR_step(Vector &v, const Vector &b, double omega) const
-      {
-        sweep<false>(v, b, omega);
-      }
+      relax(Vector       &v,
+            const Vector &b,
+            unsigned int  n,
+            bool          forward,
+            bool          ghosts_zero) const;
 
       /**
        * The entries of v on this matrix's partitioner, ghosts current:
@@ -188,6 +179,19 @@ namespace rsfcycle
        */
       const double *
       ghosted(const Vector &v) const;
+
+      /**
+       * After a kernel that read v's ghosts in place: mark them stale
+       * again (zero), so that deal.II's vector operations on v do not
+       * re-import them after every change.
+       */
+      void
+      release(const Vector &v) const
+      {
+        if (partitioner->n_ghost_indices() > 0 &&
+            v.get_partitioner().get() == partitioner.get())
+          v.zero_out_ghost_values();
+      }
 
     private:
       template <bool add>
@@ -203,11 +207,9 @@ namespace rsfcycle
               sum += values[j] * s[colnums[j]];
             d[row] = add ? d[row] + sum : sum;
           }
+        release(src);
       }
 
-      template <bool forward>
-      void
-      sweep(Vector &v, const Vector &b, double omega) const;
 
       unsigned int                                               n_rows = 0;
       std::vector<unsigned int>                                  rowstart;

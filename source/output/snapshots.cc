@@ -244,6 +244,8 @@ namespace rsfcycle
           DataOutBase::write_pvd_record(fault_pvd, fault_records);
           replace_file(dir + "/fault.pvd", fault_pvd.str());
         }
+      state.u.zero_out_ghost_values();
+      state.v.zero_out_ghost_values();
       ++n_snapshots;
     }
 

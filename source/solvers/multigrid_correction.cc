@@ -83,12 +83,11 @@ namespace rsfcycle
       mg::Matrix<la::Vector> mg_matrix;
       mg::Matrix<la::Vector> mg_interface_up;
       mg::Matrix<la::Vector> mg_interface_down;
-      using Smoother = LocalSOR;
       /** Forward Gauss-Seidel before, backward after: the V-cycle is
        * symmetric (needed by CG; alternating sweeps with an odd count of
        * them would not be). */
-      mg::SmootherRelaxation<Smoother, la::Vector> pre_smoother, post_smoother;
-      std::unique_ptr<Multigrid<la::Vector>>       multigrid;
+      std::unique_ptr<LocalSORSmoother>      pre_smoother, post_smoother;
+      std::unique_ptr<Multigrid<la::Vector>> multigrid;
       std::unique_ptr<
         PreconditionMG<dim, la::Vector, MGTransferPrebuilt<la::Vector>>>
         preconditioner;
@@ -365,20 +364,18 @@ namespace rsfcycle
       ops->mg_matrix.initialize(ops->local_matrices);
       ops->mg_interface_up.initialize(ops->local_interface);
       ops->mg_interface_down.initialize(ops->local_interface);
-      for (auto *smoother : {&ops->pre_smoother, &ops->post_smoother})
-        {
-          smoother->initialize(
-            ops->local_matrices,
-            typename LevelOperators::Smoother::AdditionalData(1.0));
-          smoother->set_steps(settings.smoothing_steps);
-        }
-      ops->post_smoother.set_transpose(true);
+      ops->pre_smoother =
+        std::make_unique<LocalSORSmoother>(settings.smoothing_steps, false);
+      ops->post_smoother =
+        std::make_unique<LocalSORSmoother>(settings.smoothing_steps, true);
+      ops->pre_smoother->initialize(ops->local_matrices);
+      ops->post_smoother->initialize(ops->local_matrices);
       ops->multigrid =
         std::make_unique<Multigrid<la::Vector>>(ops->mg_matrix,
                                                 ops->coarse,
                                                 transfer,
-                                                ops->pre_smoother,
-                                                ops->post_smoother);
+                                                *ops->pre_smoother,
+                                                *ops->post_smoother);
       ops->multigrid->set_edge_matrices(ops->mg_interface_down,
                                         ops->mg_interface_up);
       ops->preconditioner = std::make_unique<
@@ -406,13 +403,7 @@ namespace rsfcycle
           for (unsigned int i = 0; i < 4; ++i)
             own_data.push_back((*system.node_hessians)[k][i]);
         }
-      std::vector<double> all;
-      if (Utilities::MPI::n_mpi_processes(communicator) == 1)
-        all = own_data;
-      else
-        for (const auto &part :
-             Utilities::MPI::all_gather(communicator, own_data))
-          all.insert(all.end(), part.begin(), part.end());
+      const std::vector<double> all = la::all_gather(communicator, own_data);
       for (unsigned int k = 0; k < node_data.size(); ++k)
         for (unsigned int i = 0; i < 5; ++i)
           node_data[k][i] = all[5 * k + i];

@@ -132,6 +132,7 @@ namespace rsfcycle
               x[node.dofs[1]] = sol.x[1];
             }
         }
+      A.release(v);
     }
 
 

@@ -124,13 +124,8 @@ namespace rsfcycle
       std::vector<T>
       gather(const std::vector<T> &local) const
       {
-        std::vector<T> all;
-        if (n_ranks == 1)
-          all = local;
-        else
-          for (auto &part : Utilities::MPI::all_gather(communicator, local))
-            all.insert(all.end(), part.begin(), part.end());
-        std::vector<T> sorted(all.size());
+        const std::vector<T> all = la::all_gather(communicator, local);
+        std::vector<T>       sorted(all.size());
         for (unsigned int k = 0; k < order.size(); ++k)
           sorted[k] = all[order[k]];
         return sorted;

@@ -1,6 +1,8 @@
 #ifndef rsfcycle_solvers_local_sor_h
 #define rsfcycle_solvers_local_sor_h
 
+#include <deal.II/base/mg_level_object.h>
+#include <deal.II/multigrid/mg_base.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
 
@@ -9,64 +11,54 @@ namespace rsfcycle
   namespace solvers
   {
     /**
-     * Gauss-Seidel (SOR) relaxation of a rank's rows (LocalMatrix) for the
-     * multigrid smoother: the interface of deal.II's PreconditionSOR (which
-     * takes serial vectors only), the same arithmetic. Ghost values are
-     * those of the vector as given (processor-local SOR: lagged across
-     * ranks).
+     * The multigrid smoother: `steps` Gauss-Seidel sweeps (forward, or
+     * backward for the transpose) over each rank's rows of the level matrix
+     * (LocalMatrix), the other ranks' entries as they were when the
+     * smoothing began: processor-local (block Jacobi across ranks,
+     * Gauss-Seidel within a rank). One exchange of ghost values per
+     * smoothing, none for apply() (which starts from zero, so the frozen
+     * ghosts are zero). The forward pre-smoother and the backward
+     * post-smoother are adjoint, so the V-cycle stays symmetric for CG. On
+     * one rank: deal.II's SOR smoother with omega = 1.
      */
-    class LocalSOR
+    class LocalSORSmoother : public dealii::MGSmoother<la::Vector>
     {
     public:
-      struct AdditionalData
-      {
-        explicit AdditionalData(const double omega = 1.)
-          : omega(omega)
-        {}
-        double omega;
-      };
+      LocalSORSmoother(const unsigned int steps, const bool transpose)
+        : dealii::MGSmoother<la::Vector>(steps, false, false, transpose)
+      {}
 
       void
-      initialize(const la::LocalMatrix &matrix,
-                 const AdditionalData  &data = AdditionalData())
+      initialize(const dealii::MGLevelObject<la::LocalMatrix> &level_matrices)
       {
-        A     = &matrix;
-        omega = data.omega;
+        matrices = &level_matrices;
       }
 
       void
-      clear()
+      clear() override
       {
-        A = nullptr;
+        matrices = nullptr;
       }
 
       void
-      vmult(la::Vector &dst, const la::Vector &src) const
+      smooth(const unsigned int level,
+             la::Vector        &u,
+             const la::Vector  &rhs) const override
       {
-        A->precondition_SOR(dst, src, omega);
+        (*matrices)[level].relax(u, rhs, this->steps, !this->transpose, false);
       }
 
       void
-      Tvmult(la::Vector &dst, const la::Vector &src) const
+      apply(const unsigned int level,
+            la::Vector        &u,
+            const la::Vector  &rhs) const override
       {
-        A->precondition_TSOR(dst, src, omega);
-      }
-
-      void
-      step(la::Vector &v, const la::Vector &b) const
-      {
-        A->SOR_step(v, b, omega);
-      }
-
-      void
-      Tstep(la::Vector &v, const la::Vector &b) const
-      {
-        A->TSOR_step(v, b, omega);
+        u = 0;
+        (*matrices)[level].relax(u, rhs, this->steps, !this->transpose, true);
       }
 
     private:
-      const la::LocalMatrix *A     = nullptr;
-      double                 omega = 1;
+      const dealii::MGLevelObject<la::LocalMatrix> *matrices = nullptr;
     };
   } // namespace solvers
 } // namespace rsfcycle

@@ -112,6 +112,10 @@ namespace rsfcycle
       report_underflow(const StepSizeUnderflow &error);
 
       /** The message when a signal stopped the run, and the timer table. */
+      /** The timer summaries (collective on N ranks). */
+      void
+      print_timers();
+
       void
       report_stop_signal(int signal);
 

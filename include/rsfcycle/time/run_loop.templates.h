@@ -221,6 +221,21 @@ namespace rsfcycle
     }
 
 
+    /**
+     * The TimerOutput summary of this rank (the first); on N ranks also the
+     * minimum, average and maximum wall time of every section over the
+     * ranks (collective).
+     */
+    template <typename State>
+    void
+    RunLoop<State>::print_timers()
+    {
+      timer.print_summary();
+      if (model.checkpoint_identity().n_ranks > 1)
+        timer.print_wall_time_statistics(MPI_COMM_WORLD);
+    }
+
+
     template <typename State>
     void
     RunLoop<State>::report_stop_signal(const int signal)
@@ -235,7 +250,7 @@ namespace rsfcycle
                   "rsfcycle --resume " + dir :
                 std::string("this integrator writes no checkpoint"))
           << std::endl;
-      timer.print_summary();
+      print_timers();
     }
 
 
@@ -403,7 +418,7 @@ namespace rsfcycle
               << events.str();
       if (output::is_root())
         output::write_file(dir + "/summary.txt", summary.str());
-      timer.print_summary();
+      print_timers();
     }
   } // namespace time
 } // namespace rsfcycle

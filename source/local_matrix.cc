@@ -17,17 +17,27 @@ namespace rsfcycle
       rowstart.assign(1, 0);
       colnums.clear();
       values.clear();
+      // Epetra's row views (deal.II's Trilinos row iterators cost
+      // O(columns of the matrix) each)
+      const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
       for (unsigned int row = 0; row < n_rows; ++row)
         {
-          const auto global   = partitioner->local_to_global(row);
+          const long long global      = partitioner->local_to_global(row);
+          int             n           = 0;
+          double         *row_values  = nullptr;
+          int            *row_columns = nullptr;
+          matrix.ExtractMyRowView(matrix.RowMap().LID(global),
+                                  n,
+                                  row_values,
+                                  row_columns);
           const auto first    = colnums.size();
           bool       diagonal = false;
-          for (auto it = A.begin(global); it != A.end(global); ++it)
+          for (int k = 0; k < n; ++k)
             {
-              const unsigned int column =
-                partitioner->global_to_local(it->column());
+              const unsigned int column = partitioner->global_to_local(
+                matrix.ColMap().GID64(row_columns[k]));
               colnums.push_back(column);
-              values.push_back(it->value());
+              values.push_back(row_values[k]);
               if (column == row)
                 {
                   // the diagonal first (the relaxations read it there)

@@ -33,6 +33,35 @@ namespace rsfcycle
      * transpose send their contributions to the owners (compress). On one
      * rank there are no ghosts and the kernels read the vectors directly.
      */
+    /**
+     * f(row, column, value&) for every stored entry of the rank's rows of
+     * a Trilinos matrix (global indices; the value may be changed). Reads
+     * Epetra's row views: deal.II's Trilinos row iterators cost O(columns
+     * of the whole matrix) each (their cache is sized so), which made the
+     * set-up quadratic in the unknowns.
+     */
+    template <class Function>
+    void
+    for_each_entry(const dealii::TrilinosWrappers::SparseMatrix &A,
+                   const Function                               &f)
+    {
+      const Epetra_CrsMatrix &matrix = A.trilinos_matrix();
+      for (int row = 0; row < matrix.NumMyRows(); ++row)
+        {
+          int     n       = 0;
+          double *values  = nullptr;
+          int    *columns = nullptr;
+          matrix.ExtractMyRowView(row, n, values, columns);
+          const dealii::types::global_dof_index global_row =
+            matrix.RowMap().GID64(row);
+          for (int k = 0; k < n; ++k)
+            f(global_row,
+              static_cast<dealii::types::global_dof_index>(
+                matrix.ColMap().GID64(columns[k])),
+              values[k]);
+        }
+    }
+
     class LocalMatrix
     {
     public:

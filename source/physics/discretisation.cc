@@ -290,15 +290,17 @@ namespace rsfcycle
       TrilinosWrappers::SparseMatrix K;
       K.copy_from(stiffness_matrix);
       la::Vector rhs(body_force);
+      la::for_each_entry(K,
+                         [&](const types::global_dof_index row,
+                             const types::global_dof_index column,
+                             double                       &value) {
+                           if (fixed[local_index(row)] ||
+                               fixed[local_index(column)])
+                             value = (row == column) ? 1. : 0.;
+                         });
       for (unsigned int i = 0; i < partitioner->locally_owned_size(); ++i)
-        {
-          const auto row = partitioner->local_to_global(i);
-          for (auto it = K.begin(row); it != K.end(row); ++it)
-            if (fixed[i] || fixed[local_index(it->column())])
-              it->value() = (row == it->column()) ? 1. : 0.;
-          if (fixed[i])
-            rhs.local_element(i) = 0;
-        }
+        if (fixed[i])
+          rhs.local_element(i) = 0;
       // CG with algebraic multigrid (Trilinos ML): memory and time grow
       // linearly with the unknowns (the sparse LU it replaced took 232 s and
       // 2.8 GB for the 3D wedge; this takes 5 s and 70 iterations). The

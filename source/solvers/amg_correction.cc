@@ -51,15 +51,15 @@ namespace rsfcycle
       const auto is_fixed = [&](const unsigned int i) {
         return truncated[i] && contact.dof_to_node[i] < 0;
       };
-      for (unsigned int i = 0; i < partitioner.locally_owned_size(); ++i)
-        {
-          const auto row = partitioner.local_to_global(i);
-          for (auto it = h->matrix.begin(row); it != h->matrix.end(row); ++it)
-            if (it->column() != row &&
-                (is_fixed(i) ||
-                 is_fixed(partitioner.global_to_local(it->column()))))
-              it->value() = 0;
-        }
+      la::for_each_entry(h->matrix,
+                         [&](const types::global_dof_index row,
+                             const types::global_dof_index column,
+                             double                       &value) {
+                           if (row != column &&
+                               (is_fixed(partitioner.global_to_local(row)) ||
+                                is_fixed(partitioner.global_to_local(column))))
+                             value = 0;
+                         });
       for (const ContactNode &node : contact.nodes)
         {
           std::array<double, 4> d{};

@@ -391,6 +391,9 @@ namespace rsfcycle
       StepMatrix &entry = cached_step_matrix(tau, dynamic);
       if (!entry.assembled)
         {
+          if (stiffness_matrix.m() == 0)
+            throw std::logic_error("Discretisation: the assembled matrices "
+                                   "were released");
           entry.assembled = std::make_unique<TrilinosWrappers::SparseMatrix>();
           entry.assembled->copy_from(viscosity_matrix);
           entry.assembled->add(tau / 2, stiffness_matrix);
@@ -398,6 +401,15 @@ namespace rsfcycle
             entry.assembled->add(2. / tau, mass_matrix);
         }
       return *entry.assembled;
+    }
+
+
+    template <int dim>
+    void
+    Discretisation<dim>::release_assembled_matrices()
+    {
+      for (auto *matrix : {&mass_matrix, &viscosity_matrix, &stiffness_matrix})
+        matrix->clear();
     }
 
 

@@ -111,6 +111,13 @@ namespace rsfcycle
       const TrilinosWrappers::SparseMatrix &
       assembled_step_matrix(double tau, bool dynamic);
 
+      /**
+       * Free the Trilinos M, C, K (kept only for assembled_step_matrix(),
+       * i.e. algebraic multigrid): a third of the memory of a run.
+       */
+      void
+      release_assembled_matrices();
+
       /** For every locally owned dof, its vector component. */
       std::vector<unsigned int>
       dof_components() const;

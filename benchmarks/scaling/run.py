@@ -7,10 +7,11 @@ in one invocation (issue 14):
        first events);
   3d   prm/wedge-3d.prm (2 + 3 refinements, 54,543 unknowns) from t = 0 to
        --end-3d (default 40 s of the loading ramp);
-  big  the 3D wedge refined to at least 1 million unknowns (3 global + 3
-       local refinements), --end-big seconds (default 0.05 s: a few time
-       steps) on 2 ranks: set-up, memory per rank, time per multigrid cycle
-       and unknown.
+  big  the 3D wedge at 3 global + 3 local refinements (230k unknowns),
+       --end-big seconds (default 0.05 s: a few time steps) on 2 ranks:
+       set-up, memory per rank, time per multigrid cycle and unknown. The
+       1.15M-unknown run of README.md is the same at 4 + 3 refinements with
+       Refinement distance = 2 (9 GB per rank: run by hand).
 
 Every run uses the multigrid linear correction (the default of both .prm
 files) and writes no VTU. Reported per run: wall time of the time loop

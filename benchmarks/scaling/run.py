@@ -222,7 +222,7 @@ def plot():
                    marker + "--", label=label + ": cycles/TNNMG")
     ax[0].plot([1, 2], [1, 2], "k:", label="ideal")
     ax[0].axvspan(2.5, 4.5, color="0.9")
-    ax[0].text(3, 0.3, "4 ranks on 2 cores\n(oversubscribed)", fontsize=8)
+    ax[0].text(2.6, 1.05, "4 ranks on 2 cores\n(oversubscribed)", fontsize=8)
     ax[0].set_xlabel("MPI ranks")
     ax[0].set_ylabel("speed-up of the time loop")
     ax[0].legend(fontsize=7)

@@ -6,6 +6,23 @@ namespace rsfcycle
 {
   namespace la
   {
+    dealii::IndexSet
+    matrix_ghosts(const dealii::DynamicSparsityPattern &pattern,
+                  const dealii::IndexSet               &owned,
+                  const dealii::IndexSet               &relevant)
+    {
+      std::vector<dealii::types::global_dof_index> columns;
+      for (const auto row : owned)
+        for (auto it = pattern.begin(row); it != pattern.end(row); ++it)
+          columns.push_back(it->column());
+      std::sort(columns.begin(), columns.end());
+      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+      dealii::IndexSet ghosts = relevant;
+      ghosts.add_indices(columns.begin(), columns.end());
+      return ghosts;
+    }
+
+
     void
     LocalMatrix::initialize(
       const dealii::TrilinosWrappers::SparseMatrix &A,

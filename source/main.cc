@@ -212,7 +212,7 @@ namespace
         ": choose multigrid or amg, or start it without mpirun");
     // The first rank prepares the folder and writes the log; every rank
     // learns whether the folder was refused.
-    const bool root = launched_processes().second == 0;
+    const bool root = rsfcycle::output::is_root();
     if (!resume)
       {
         std::string refused;

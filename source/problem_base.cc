@@ -134,7 +134,6 @@ namespace rsfcycle
                                      dirichlet,
                                      boundary_id::contact,
                                      vertices,
-                                     contact.first_global_node(),
                                      level_cell_matrices,
                                      coefficients,
                                      settings);

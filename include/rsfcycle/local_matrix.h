@@ -1,7 +1,9 @@
 #ifndef rsfcycle_local_matrix_h
 #define rsfcycle_local_matrix_h
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/partitioner.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <memory>
 #include <rsfcycle/la.h>
@@ -61,6 +63,16 @@ namespace rsfcycle
               values[k]);
         }
     }
+
+    /**
+     * The ghost indices of the vectors that a LocalMatrix of the owned rows
+     * of `pattern` reads: the locally relevant indices and every column of
+     * an owned row.
+     */
+    dealii::IndexSet
+    matrix_ghosts(const dealii::DynamicSparsityPattern &pattern,
+                  const dealii::IndexSet               &owned,
+                  const dealii::IndexSet               &relevant);
 
     class LocalMatrix
     {

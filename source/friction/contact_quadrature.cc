@@ -117,20 +117,8 @@ namespace rsfcycle
       std::vector<Point<dim>> positions;
       for (const auto &info : node_info)
         positions.push_back(info.position);
-      first_node                  = 0;
-      std::vector<Point<dim>> all = positions;
-      if (n_ranks > 1)
-        {
-          const auto parts =
-            Utilities::MPI::all_gather(communicator, positions);
-          all.clear();
-          for (unsigned int r = 0; r < parts.size(); ++r)
-            {
-              if (r == Utilities::MPI::this_mpi_process(communicator))
-                first_node = all.size();
-              all.insert(all.end(), parts[r].begin(), parts[r].end());
-            }
-        }
+      const std::vector<Point<dim>> all =
+        la::all_gather(communicator, positions);
       order.resize(all.size());
       for (unsigned int k = 0; k < order.size(); ++k)
         order[k] = k;

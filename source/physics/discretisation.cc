@@ -102,17 +102,7 @@ namespace rsfcycle
                                       hanging_constraints,
                                       true);
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
-      IndexSet ghosts = relevant;
-      {
-        std::vector<types::global_dof_index> columns;
-        for (const auto row : owned)
-          for (auto it = dsp.begin(row); it != dsp.end(row); ++it)
-            columns.push_back(it->column());
-        std::sort(columns.begin(), columns.end());
-        columns.erase(std::unique(columns.begin(), columns.end()),
-                      columns.end());
-        ghosts.add_indices(columns.begin(), columns.end());
-      }
+      const IndexSet ghosts = la::matrix_ghosts(dsp, owned, relevant);
       for (auto *matrix : {&mass_matrix, &viscosity_matrix, &stiffness_matrix})
         matrix->reinit(owned, owned, dsp, comm);
       partitioner =

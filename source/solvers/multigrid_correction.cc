@@ -100,7 +100,6 @@ namespace rsfcycle
       const std::vector<DirichletBoundary> &dirichlet,
       const types::boundary_id              contact_id,
       const std::vector<ContactVertex>     &contact_vertices,
-      const unsigned int                    first_node,
       const CellMatrices                   &cell_matrices,
       const Coefficients                   &coefficients,
       const Settings                       &settings)
@@ -162,17 +161,7 @@ namespace rsfcycle
                                                      owned,
                                                      communicator,
                                                      relevant);
-          IndexSet ghosts = relevant;
-          {
-            std::vector<types::global_dof_index> columns;
-            for (const auto row : owned)
-              for (auto it = dsp.begin(row); it != dsp.end(row); ++it)
-                columns.push_back(it->column());
-            std::sort(columns.begin(), columns.end());
-            columns.erase(std::unique(columns.begin(), columns.end()),
-                          columns.end());
-            ghosts.add_indices(columns.begin(), columns.end());
-          }
+          const IndexSet ghosts = la::matrix_ghosts(dsp, owned, relevant);
           level_partitioners[level] =
             std::make_shared<Utilities::MPI::Partitioner>(owned,
                                                           ghosts,
@@ -304,9 +293,6 @@ namespace rsfcycle
                 }
             }
         }
-      this->first_node = first_node;
-      node_data.resize(contact_vertices.size());
-      own_data.reserve(5 * contact_vertices.size());
     }
 
 
@@ -395,18 +381,15 @@ namespace rsfcycle
       // The truncation and Hessian of every rank's contact nodes: a level
       // dof may belong to another rank than the node's active dofs.
       const ContactSet &contact = *system.contact;
-      own_data.clear();
+      own_data.resize(contact.nodes.size());
       for (unsigned int k = 0; k < contact.nodes.size(); ++k)
         {
-          own_data.push_back(
-            (*system.truncated)[contact.nodes[k].dofs[0]] ? 1. : 0.);
+          own_data[k][0] =
+            (*system.truncated)[contact.nodes[k].dofs[0]] ? 1. : 0.;
           for (unsigned int i = 0; i < 4; ++i)
-            own_data.push_back((*system.node_hessians)[k][i]);
+            own_data[k][1 + i] = (*system.node_hessians)[k][i];
         }
-      const std::vector<double> all = la::all_gather(communicator, own_data);
-      for (unsigned int k = 0; k < node_data.size(); ++k)
-        for (unsigned int i = 0; i < 5; ++i)
-          node_data[k][i] = all[5 * k + i];
+      node_data = la::all_gather(communicator, own_data);
 
       for (unsigned int level = 0; level < contact_blocks.size(); ++level)
         for (unsigned int b = 0; b < contact_blocks[level].size(); ++b)

@@ -100,22 +100,22 @@ kill -9 $pid; wait $pid 2>/dev/null
 "${mpi[@]}" 1 "$exe" --resume kr-b > kr-b-1.log 2> kr-b-1.err
 [ $? -ne 0 ] && grep -q "written on 2 MPI ranks, this run has 1: resume with mpirun -np 2" kr-b-1.err
 check $? "resume of a 2-rank checkpoint on 1 rank refused"
-"${mpi[@]}" 2 "$exe" --resume kr-b > kr-b-2.log 2>&1
-ok=$?
-for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
-  cmp -s kr-a/$f kr-b/$f || { ok=1; echo "$f differs after SIGKILL + resume on 2 ranks"; }
-done
-check $ok "SIGKILL + resume on 2 ranks: identical to the uninterrupted run"
+same_as_uninterrupted() { # run folder: resume it on 2 ranks, compare with kr-a
+  "${mpi[@]}" 2 "$exe" --resume $1 > $1-2.log 2>&1 || return 1
+  local f ok=0
+  for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
+    cmp -s kr-a/$f $1/$f || { ok=1; echo "$f of $1 differs after resume on 2 ranks"; }
+  done
+  return $ok
+}
+same_as_uninterrupted kr-b
+check $? "SIGKILL + resume on 2 ranks: identical to the uninterrupted run"
 start_and_wait kr-c
 kill -INT $pid; wait $pid; status=$?
 grep -q "Stopped by signal.*Continue with: mpirun -np 2 rsfcycle --resume" kr-c.log
 check $(( status != 0 ? $? : 1 )) "SIGINT on 2 ranks: checkpoint and the resume hint (exit $status)"
-"${mpi[@]}" 2 "$exe" --resume kr-c > kr-c-2.log 2>&1
-ok=$?
-for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
-  cmp -s kr-a/$f kr-c/$f || { ok=1; echo "$f differs after SIGINT + resume on 2 ranks"; }
-done
-check $ok "SIGINT + resume on 2 ranks: identical to the uninterrupted run"
+same_as_uninterrupted kr-c
+check $? "SIGINT + resume on 2 ranks: identical to the uninterrupted run"
 
 sed 's/run-slider/run-one/' slider.prm > one.prm
 "${mpi[@]}" 1 "$exe" one.prm > one.out 2> one.err

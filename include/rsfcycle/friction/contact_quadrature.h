@@ -131,23 +131,12 @@ namespace rsfcycle
         return sorted;
       }
 
-      /**
-       * Where this rank's nodes start in the nodes of all ranks listed
-       * rank by rank (the order of all_gather before sorting).
-       */
-      unsigned int
-      first_global_node() const
-      {
-        return first_node;
-      }
-
     private:
       solvers::ContactSet   contact;
       std::vector<NodeInfo> node_info;
       double                area         = 0;
       MPI_Comm              communicator = MPI_COMM_SELF;
       unsigned int          n_ranks      = 1;
-      unsigned int          first_node   = 0;
       /** Sorted position k -> index in the rank-by-rank list. */
       std::vector<unsigned int> order;
     };

@@ -104,14 +104,12 @@ namespace rsfcycle
 
       /**
        * The DoFHandler must have its level dofs distributed. contact_id is
-       * the boundary that carries the friction; the rank's own contact
-       * nodes start at first_node in contact_vertices.
+       * the boundary that carries the friction.
        */
       MultigridCorrection(const dealii::DoFHandler<dim>        &dof_handler,
                           const std::vector<DirichletBoundary> &dirichlet,
                           dealii::types::boundary_id            contact_id,
                           const std::vector<ContactVertex> &contact_vertices,
-                          unsigned int                      first_node,
                           const CellMatrices               &cell_matrices,
                           const Coefficients               &coefficients,
                           const Settings                   &settings);
@@ -161,13 +159,11 @@ namespace rsfcycle
         double                      scale  = 1;
       };
       std::vector<std::vector<LevelContactBlock>> contact_blocks; // by level
-      unsigned int                                first_node = 0;
       /**
        * Per contact node of all ranks: truncated (1/0) and its Hessian
        * block, gathered per solve.
        */
-      std::vector<std::array<double, 5>> node_data;
-      std::vector<double>                own_data;
+      std::vector<std::array<double, 5>> node_data, own_data;
 
       std::vector<std::unique_ptr<LevelOperators>> cache;
       ProjectedCG                                  cg;

@@ -67,13 +67,41 @@ namespace rsfcycle
                       "4",
                       Integer(0, 16),
                       "Further refinements toward the seismogenic patch");
+    prm.declare_entry(
+      "Refinement law",
+      "centre distance",
+      Selection("centre distance|band"),
+      "How the local refinements choose the cells to refine toward the "
+      "seismogenic patch. centre distance: a cell is refined when its centre "
+      "is closer to the patch than `Refinement distance` times its diameter "
+      "(the refined zone shrinks with the level; flat cells, as in the "
+      "wedge's coarse mesh, make it many cells thick). band: a cell is "
+      "refined when it meets the patch widened by `Refinement band` along "
+      "the base, or is closer to it than `Refinement band layers` times its "
+      "shortest edge, so that the finest cells cover the patch and the band "
+      "and the coarser ones grow outward in layers");
     prm.declare_entry("Refinement distance",
                       "1.5",
                       Double(0),
-                      "In every local refinement, cells whose centre is "
-                      "closer to the patch than this multiple of their "
-                      "diameter are refined [-]; the refined zone so "
-                      "shrinks with the level");
+                      "With Refinement law = centre distance: in every local "
+                      "refinement, cells whose centre is closer to the patch "
+                      "than this multiple of their diameter are refined [-]");
+    prm.declare_entry("Refinement band",
+                      "0",
+                      Double(0),
+                      "With Refinement law = band: the seismogenic patch is "
+                      "widened by this distance along the base (beyond its "
+                      "ends and lateral edges, not into the body) and the "
+                      "cells on the widened patch get the finest level [m]; "
+                      "0 gives the finest cells to the patch alone");
+    prm.declare_entry("Refinement band layers",
+                      "1",
+                      Double(0),
+                      "With Refinement law = band: a cell that does not touch "
+                      "the widened patch is refined when it is closer to it "
+                      "than this many of its shortest edges, so that every "
+                      "level adds about this many layers of cells of its size "
+                      "around the finer ones [-]");
     prm.leave_subsection();
   }
 
@@ -81,9 +109,14 @@ namespace rsfcycle
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    global_refinements  = prm.get_integer("Global refinements");
-    local_refinements   = prm.get_integer("Local refinements");
-    refinement_distance = prm.get_double("Refinement distance");
+    global_refinements     = prm.get_integer("Global refinements");
+    local_refinements      = prm.get_integer("Local refinements");
+    refinement_law         = prm.get("Refinement law") == "band" ?
+                               RefinementLaw::band :
+                               RefinementLaw::centre_distance;
+    refinement_distance    = prm.get_double("Refinement distance");
+    refinement_band        = prm.get_double("Refinement band");
+    refinement_band_layers = prm.get_double("Refinement band layers");
     prm.leave_subsection();
   }
 

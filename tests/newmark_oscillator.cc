@@ -43,9 +43,9 @@ public:
         }
   }
   double
-  distance_to_patch(const Point<2> &p) const override
+  distance_to_patch(const BoundingBox<2> &box, double margin) const override
   {
-    return p.norm();
+    return std::max(0., box.get_boundary_points().first.norm() - margin);
   }
   types::material_id
   material_id(const Point<2> &) const override

@@ -17,14 +17,20 @@ resolutions: the observed order p = log2(|d1| / |d2|) of the last two
 changes d1, d2 and the Richardson limit q + d2 / (2^p - 1); every resolution
 is then given as its distance from that limit.
 
+The refinement law is `Mesh/Refinement law = band` (the finest cells on
+the patch widened by BAND metres along the base, LAYERS layers of cells per
+level around them) unless `--law centre` asks for the `centre distance` law
+(centre closer than 1.5 diameters). The law and its parameters are part of
+the run's name; the tables and the figure take the runs of one law.
+
 Runs are kept in WORK/<name>/ and not repeated if their summary.txt exists
 (`--rerun` repeats them); results.csv and the table hold every finished run
 in WORK, so that the series can be extended run by run (`--levels 10`).
 
 Usage: benchmarks/convergence/run.py [BUILD_DIR] [--levels 4,5,6,7,8,9]
            [--delta 1e-5] [--events 16] [--tight 5] [--jobs 2] [--work DIR]
-           [--rerun]
-       benchmarks/convergence/run.py --table | --plot
+           [--law band|centre] [--band 0.2] [--layers 1] [--rerun]
+       benchmarks/convergence/run.py --table | --plot  [--law ...]
 """
 import concurrent.futures
 import csv
@@ -58,7 +64,8 @@ def arg(name, default):
     return default
 
 
-OPTS = ("--levels", "--delta", "--events", "--jobs", "--work", "--tight")
+OPTS = ("--levels", "--delta", "--events", "--jobs", "--work", "--tight",
+        "--law", "--band", "--layers")
 BUILD = next((a for i, a in enumerate(sys.argv[1:], 1)
               if not a.startswith("--") and sys.argv[i - 1] not in OPTS),
              os.path.join(ROOT, "build"))
@@ -69,12 +76,22 @@ EVENTS = int(arg("--events", "16"))
 JOBS = int(arg("--jobs", "2"))
 TIGHT = [int(k) for k in arg("--tight", "5").split(",") if k]
 WORK = arg("--work", os.path.join(HERE, "work"))
-RESULTS = os.path.join(HERE, "results.csv")
-FIGURE = os.path.join(ROOT, "doc", "figures", "convergence-2d.png")
+LAW = arg("--law", "band")
+BAND = float(arg("--band", "0.2"))
+LAYERS = float(arg("--layers", "1"))
+LAW_TAG = f"band{BAND:g}x{LAYERS:g}" if LAW == "band" else "centre1.5"
+RESULTS = os.path.join(HERE, f"results-{LAW_TAG}.csv")
+FIGURE = os.path.join(ROOT, "doc", "figures", f"convergence-2d-{LAW_TAG}.png")
+MESH = f"""subsection Mesh
+  set Refinement law         = band
+  set Refinement band        = {BAND:g}
+  set Refinement band layers = {LAYERS:g}
+end
+""" if LAW == "band" else ""
 
 
 def run_name(level, delta):
-    return f"2+{level}-delta{delta:g}"
+    return f"{LAW_TAG}-2+{level}-delta{delta:g}"
 
 
 def make_prm(level, delta):
@@ -92,7 +109,7 @@ subsection Solver
   set Linear correction     = multigrid
   set TNNMG tolerance       = {delta / 10:g}
 end
-"""))
+{MESH}"""))
     return d, prm
 
 
@@ -229,7 +246,7 @@ def plot():
         ax.invert_xaxis()
         ax.legend(fontsize=7)
     fig.suptitle("2D wedge: event statistics against the mesh "
-                 "(2 global + K local refinements)")
+                 f"(2 global + K local refinements, {LAW_TAG})")
     fig.tight_layout()
     fig.savefig(FIGURE, dpi=110)
     print(FIGURE)
@@ -249,7 +266,7 @@ def main():
     # every finished run in WORK, also those of earlier invocations
     rows = []
     for name in sorted(os.listdir(WORK)):
-        m = re.fullmatch(r"2\+(\d+)-delta(\S+)", name)
+        m = re.fullmatch(re.escape(LAW_TAG) + r"-2\+(\d+)-delta(\S+)", name)
         if m and os.path.exists(os.path.join(WORK, name, "summary.txt")):
             row = event_statistics(os.path.join(WORK, name))
             row.update(run=name, level=int(m.group(1)),

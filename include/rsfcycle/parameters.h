@@ -27,9 +27,21 @@ namespace rsfcycle
   /** Subsection "Mesh": refinement toward the seismogenic patch. */
   struct MeshParameters
   {
-    unsigned int global_refinements  = 3;
-    unsigned int local_refinements   = 4;
-    double       refinement_distance = 1.5;
+    /** How the cells to refine toward the patch are chosen. */
+    enum class RefinementLaw
+    {
+      /** centre closer than `refinement_distance` x diameter */
+      centre_distance,
+      /** box within `refinement_band` + layers x shortest edge */
+      band
+    };
+
+    unsigned int  global_refinements     = 3;
+    unsigned int  local_refinements      = 4;
+    RefinementLaw refinement_law         = RefinementLaw::centre_distance;
+    double        refinement_distance    = 1.5;
+    double        refinement_band        = 0;
+    double        refinement_band_layers = 1;
 
     static void
     declare_parameters(ParameterHandler &prm);

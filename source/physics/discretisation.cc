@@ -42,11 +42,34 @@ namespace rsfcycle
 
 
     /**
-     * In every local cycle the cells whose centre is closer to the patch
-     * than `Refinement distance` times their diameter are refined, so the
-     * refined zone shrinks with the level and the patch gets the finest
-     * cells.
+     * Every local cycle refines the cells that the refinement law
+     * (`Mesh/Refinement law`) puts near the patch: `centre distance` compares
+     * the distance of the cell's centre with a multiple of its diameter,
+     * `band` refines the cells whose bounding box meets the patch widened by
+     * the band, and those closer to it than a multiple of their shortest
+     * edge. Either way the zone shrinks with the
+     * cell size, so the patch gets the finest cells; deal.II's level
+     * difference limit at vertices (needed by the multigrid) grades the
+     * rest 2:1.
      */
+    template <int dim>
+    bool
+    Discretisation<dim>::near_patch(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const
+    {
+      if (mesh.refinement_law == MeshParameters::RefinementLaw::band)
+        {
+          const double gap =
+            scene.distance_to_patch(cell->bounding_box(), mesh.refinement_band);
+          return gap == 0 || gap < mesh.refinement_band_layers *
+                                     cell->minimum_vertex_distance();
+        }
+      const Point<dim> c = cell->center();
+      return scene.distance_to_patch(BoundingBox<dim>({c, c})) <
+             mesh.refinement_distance * cell->diameter();
+    }
+
+
     template <int dim>
     void
     Discretisation<dim>::make_grid()
@@ -56,9 +79,7 @@ namespace rsfcycle
       for (unsigned int cycle = 0; cycle < mesh.local_refinements; ++cycle)
         {
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() &&
-                scene.distance_to_patch(cell->center()) <
-                  mesh.refinement_distance * cell->diameter())
+            if (cell->is_locally_owned() && near_patch(cell))
               cell->set_refine_flag();
           triangulation.execute_coarsening_and_refinement();
         }

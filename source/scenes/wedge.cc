@@ -274,15 +274,45 @@ namespace rsfcycle
     }
 
 
+    /**
+     * The patch is {y = 0, s_up <= x <= s_down(z), 0 <= z <= Width} with
+     * s_down linear in z. The distance splits into the height of the box
+     * above the base and the distance in the base plane between the box's
+     * footprint and the patch, the latter reduced by the margin (the patch
+     * widened by a disc of that radius in the plane). In 3D the in-plane
+     * distance is the minimum over the patch's z of a convex function of z
+     * (the along-base gap to [s_up, s_down(z)] and the lateral gap to the
+     * box), found by ternary search.
+     */
     template <int dim>
     double
-    Wedge<dim>::distance_to_patch(const Point<dim> &p) const
+    Wedge<dim>::distance_to_patch(const BoundingBox<dim> &box,
+                                  const double            margin) const
     {
-      const double z            = (dim == 3) ? p[2] : 0.;
-      const auto [s_up, s_down] = patch_extent(z);
-      const double dx           = std::max({0., s_up - p[0], p[0] - s_down});
-      const double dz = (dim == 3) ? std::max({0., -z, z - width}) : 0.;
-      return std::sqrt(dx * dx + p[1] * p[1] + dz * dz);
+      const auto &[lo, hi] = box.get_boundary_points();
+      const double s_up    = patch_extent(0.).first;
+      const auto   at      = [&](const double z) {
+        const double gx =
+          std::max({0., s_up - hi[0], lo[0] - patch_extent(z).second});
+        const double gz =
+          (dim == 3) ? std::max({0., lo[dim - 1] - z, z - hi[dim - 1]}) : 0.;
+        return std::hypot(gx, gz);
+      };
+      double in_plane = at(0.);
+      if (dim == 3)
+        {
+          double a = 0, b = width;
+          for (unsigned int i = 0; i < 80; ++i)
+            {
+              const double m1 = a + (b - a) / 3, m2 = b - (b - a) / 3;
+              if (at(m1) < at(m2))
+                b = m2;
+              else
+                a = m1;
+            }
+          in_plane = std::min({at(0.), at(width), at((a + b) / 2)});
+        }
+      return std::hypot(std::max(0., in_plane - margin), std::max(0., lo[1]));
     }
 
 

@@ -172,6 +172,11 @@ namespace rsfcycle
       std::vector<std::pair<unsigned int, unsigned int>> backstop_dofs;
 
     private:
+      /** Whether the refinement law selects this cell in a local cycle. */
+      bool
+      near_patch(
+        const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
       const MeshParameters     &mesh;
       const scenes::Scene<dim> &scene;
 

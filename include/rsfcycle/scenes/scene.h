@@ -1,6 +1,7 @@
 #ifndef rsfcycle_scenes_scene_h
 #define rsfcycle_scenes_scene_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -46,9 +47,16 @@ namespace rsfcycle
       virtual void
       create_coarse_mesh(Triangulation<dim> &tria) const = 0;
 
-      /** Distance of a point to the seismogenic patch [m] (refinement). */
+      /**
+       * Distance of a box (a cell's bounding box, or a point when the box
+       * is degenerate) to the seismogenic patch widened by `margin` in the
+       * plane of the base (beyond its ends and lateral edges) [m]; zero
+       * when they overlap. The refinement laws of
+       * Discretisation::make_grid() use it.
+       */
       virtual double
-      distance_to_patch(const Point<dim> &p) const = 0;
+      distance_to_patch(const BoundingBox<dim> &box,
+                        double                  margin = 0) const = 0;
 
       /** The region (material id) of a cell with the given centre. */
       virtual types::material_id

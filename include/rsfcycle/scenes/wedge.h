@@ -26,7 +26,8 @@ namespace rsfcycle
       void
       create_coarse_mesh(Triangulation<dim> &tria) const override;
       double
-      distance_to_patch(const Point<dim> &p) const override;
+      distance_to_patch(const BoundingBox<dim> &box,
+                        double                  margin) const override;
       types::material_id
       material_id(const Point<dim> &cell_center) const override;
       Material

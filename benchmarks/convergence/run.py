@@ -20,7 +20,7 @@ is then given as its distance from that limit.
 The refinement law is `Mesh/Refinement law = band` (the finest cells on
 the patch widened by BAND metres along the base, LAYERS layers of cells per
 level around them) unless `--law centre` asks for the `centre distance` law
-(centre closer than 1.5 diameters). The law and its parameters are part of
+(centre closer than DISTANCE diameters, `--distance`, default 1.5). The law and its parameters are part of
 the run's name; the tables and the figure take the runs of one law.
 
 Runs are kept in WORK/<name>/ and not repeated if their summary.txt exists
@@ -29,8 +29,11 @@ in WORK, so that the series can be extended run by run (`--levels 10`).
 
 Usage: benchmarks/convergence/run.py [BUILD_DIR] [--levels 4,5,6,7,8,9]
            [--delta 1e-5] [--events 16] [--tight 5] [--jobs 2] [--work DIR]
-           [--law band|centre] [--band 0.2] [--layers 1] [--rerun]
+           [--law band|centre] [--band 0.2] [--layers 1] [--distance 1.5]
+           [--rerun]
        benchmarks/convergence/run.py --table | --plot  [--law ...]
+       benchmarks/convergence/run.py --grading K   # every law at 2 + K
+       benchmarks/convergence/run.py --plot-grading K
 """
 import concurrent.futures
 import csv
@@ -64,8 +67,8 @@ def arg(name, default):
     return default
 
 
-OPTS = ("--levels", "--delta", "--events", "--jobs", "--work", "--tight",
-        "--law", "--band", "--layers")
+OPTS = ("--grading", "--plot-grading", "--levels", "--delta", "--events", "--jobs", "--work", "--tight",
+        "--law", "--band", "--layers", "--distance")
 BUILD = next((a for i, a in enumerate(sys.argv[1:], 1)
               if not a.startswith("--") and sys.argv[i - 1] not in OPTS),
              os.path.join(ROOT, "build"))
@@ -79,7 +82,9 @@ WORK = arg("--work", os.path.join(HERE, "work"))
 LAW = arg("--law", "band")
 BAND = float(arg("--band", "0.2"))
 LAYERS = float(arg("--layers", "1"))
-LAW_TAG = f"band{BAND:g}x{LAYERS:g}" if LAW == "band" else "centre1.5"
+DISTANCE = float(arg("--distance", "1.5"))
+LAW_TAG = f"band{BAND:g}x{LAYERS:g}" if LAW == "band" else \
+    f"centre{DISTANCE:g}"
 RESULTS = os.path.join(HERE, f"results-{LAW_TAG}.csv")
 FIGURE = os.path.join(ROOT, "doc", "figures", f"convergence-2d-{LAW_TAG}.png")
 MESH = f"""subsection Mesh
@@ -87,7 +92,11 @@ MESH = f"""subsection Mesh
   set Refinement band        = {BAND:g}
   set Refinement band layers = {LAYERS:g}
 end
-""" if LAW == "band" else ""
+""" if LAW == "band" else f"""subsection Mesh
+  set Refinement law      = centre distance
+  set Refinement distance = {DISTANCE:g}
+end
+"""
 
 
 def run_name(level, delta):
@@ -220,6 +229,83 @@ def table():
                            for r in series) + " |")
 
 
+def grading(level):
+    """The runs of every law at one level: the effect of the grading."""
+    import glob
+    rows = []
+    for path in glob.glob(os.path.join(HERE, "results-*.csv")):
+        tag = os.path.basename(path)[len("results-"):-len(".csv")]
+        for r in csv.DictReader(open(path)):
+            if int(float(r["level"])) == level and float(r["delta"]) == DELTA:
+                r = {k: (v if k == "run" else float(v)) for k, v in r.items()}
+                r["tag"] = tag
+                rows.append(r)
+    rows.sort(key=lambda r: r["unknowns"])
+    print(f"| 2 + {level}: law | unknowns | "
+          + " | ".join(f"{label} [{unit}]" for _, label, unit, _ in QUANTITIES)
+          + " | wall [s] |")
+    print("|---" * (len(QUANTITIES) + 3) + "|")
+    for r in rows:
+        print(f"| {r['tag']} | {int(r['unknowns'])} | "
+              + " | ".join(f"{r[c]:.4g}" for c, *_ in QUANTITIES)
+              + f" | {r['wall_s']:.0f} |")
+    # Richardson in the grading: centre-distance runs with doubling distance
+    centre = sorted([r for r in rows if r["tag"].startswith("centre")],
+                    key=lambda r: float(r["tag"][len("centre"):]))
+    d = [float(r["tag"][len("centre"):]) for r in centre]
+    if len(centre) >= 3 and all(b == 2 * a for a, b in zip(d[-3:], d[-2:])):
+        print()
+        print(f"| quantity | order in the distance | limit | "
+              + " | ".join(f"centre {x:g}" for x in d) + " |")
+        print("|---" * (len(d) + 3) + "|")
+        for column, label, unit, _ in QUANTITIES:
+            p, limit = richardson(centre, column)
+            if limit is None:
+                print(f"| {label} [{unit}] | – | – | "
+                      + " | ".join(f"{r[column]:.4g}" for r in centre) + " |")
+                continue
+            print(f"| {label} [{unit}] | {p:.2f} | {limit:.4g} | "
+                  + " | ".join(f"{100 * (r[column] / limit - 1):+.1f} %"
+                               for r in centre) + " |")
+
+
+def plot_grading(level):
+    """Event statistics at 2 + K against the unknowns, one line per law."""
+    import glob
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(3, 3, figsize=(11, 9))
+    for family, marker in (("centre", "o-"), ("band", "s--")):
+        rows = []
+        for path in glob.glob(os.path.join(HERE, f"results-{family}*.csv")):
+            tag = os.path.basename(path)[len("results-"):-len(".csv")]
+            for r in csv.DictReader(open(path)):
+                if int(float(r["level"])) == level and \
+                        float(r["delta"]) == DELTA:
+                    r = {k: (v if k == "run" else float(v))
+                         for k, v in r.items()}
+                    r["tag"] = tag
+                    rows.append(r)
+        rows.sort(key=lambda r: r["unknowns"])
+        for ax, (column, label, unit, _) in zip(axes.flat, QUANTITIES):
+            ax.semilogx([r["unknowns"] for r in rows],
+                        [r[column] for r in rows], marker,
+                        label="centre distance 1.5 / 3 / 6"
+                        if family == "centre" else
+                        "band 0.2 m, 2 / 4 / 8 layers")
+            ax.set_title(f"{label} [{unit}]")
+            ax.set_xlabel("unknowns")
+    for ax in axes.flat:
+        ax.legend(fontsize=7)
+    fig.suptitle(f"2D wedge, 2 + {level} refinements (patch cells 2.6 – "
+                 "3.0 mm): event statistics against the grading")
+    fig.tight_layout()
+    out = os.path.join(ROOT, "doc", "figures", "convergence-2d-grading.png")
+    fig.savefig(out, dpi=110)
+    print(out)
+
+
 def plot():
     import matplotlib
     matplotlib.use("Agg")
@@ -257,6 +343,10 @@ def main():
         return table()
     if "--plot" in sys.argv:
         return plot()
+    if "--grading" in sys.argv:
+        return grading(int(arg("--grading", "6")))
+    if "--plot-grading" in sys.argv:
+        return plot_grading(int(arg("--plot-grading", "6")))
     os.makedirs(WORK, exist_ok=True)
     jobs = [(k, DELTA) for k in LEVELS] + [(k, DELTA / 10) for k in TIGHT]
     # the finest (slowest) first, so that the pool ends together

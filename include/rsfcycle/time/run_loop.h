@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <deal.II/base/timer.h>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -163,6 +164,14 @@ namespace rsfcycle
       std::chrono::steady_clock::time_point wall_start, last_progress;
       double                                t_start = 0;
       Sample                                last_sample;
+      /**
+       * (wall seconds since the start, simulated time) of the progress
+       * reports of the last `eta_window` wall seconds: the ETA uses the
+       * recent rate, so that a cheap loading phase does not make it promise
+       * too little for the seismic cycles that follow.
+       */
+      std::deque<std::pair<double, double>> recent_progress;
+      static constexpr double               eta_window = 300;
     };
   } // namespace time
 } // namespace rsfcycle

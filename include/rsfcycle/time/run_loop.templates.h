@@ -370,9 +370,16 @@ namespace rsfcycle
       last_progress = now;
       const double elapsed =
         std::chrono::duration<double>(now - wall_start).count();
-      const double eta    = elapsed / (s.t - t_start) * (end_time - s.t);
-      const auto  &counts = last_sample.statistics;
-      const auto  &rates  = last_sample.slip_rates;
+      recent_progress.emplace_back(elapsed, s.t);
+      while (recent_progress.size() > 2 &&
+             elapsed - recent_progress[1].first > eta_window)
+        recent_progress.pop_front();
+      const auto [wall_0, t_0] = recent_progress.front();
+      const double eta         = (s.t > t_0) ?
+                                   (elapsed - wall_0) / (s.t - t_0) * (end_time - s.t) :
+                                   elapsed / (s.t - t_start) * (end_time - s.t);
+      const auto  &counts      = last_sample.statistics;
+      const auto  &rates       = last_sample.slip_rates;
       const double max_rate =
         rates.empty() ? 0. : *std::max_element(rates.begin(), rates.end());
       log << "*** Step " << s.step << ": t = " << std::setprecision(6) << s.t

@@ -201,23 +201,11 @@ def richardson(rows, column):
     return p, q[2] + d2 / (2 ** p - 1)
 
 
-def table():
-    rows = read_results()
-    series = sorted([r for r in rows if r["delta"] == max(
-        x["delta"] for x in rows)], key=lambda r: r["level"])
-    print("| mesh | unknowns | patch cells [mm] | "
-          + " | ".join(f"{label} [{unit}]" for _, label, unit, _ in QUANTITIES)
-          + " | steps | wall [s] |")
-    print("|---" * (len(QUANTITIES) + 5) + "|")
-    for r in sorted(rows, key=lambda r: (r["level"], -r["delta"])):
-        print(f"| 2 + {int(r['level'])}, δ = {r['delta']:g} | "
-              f"{int(r['unknowns'])} | {r['patch_cell_mm']:.2f} | "
-              + " | ".join(f"{r[c]:.4g}" for c, *_ in QUANTITIES)
-              + f" | {int(r['steps'])} | {r['wall_s']:.0f} |")
-    print()
-    print("| quantity | observed order | Richardson limit | "
-          + " | ".join(f"2 + {int(r['level'])}" for r in series) + " |")
-    print("|---" * (len(series) + 3) + "|")
+def richardson_table(series, names, order_label):
+    """Order, limit and every run's distance from it, per quantity."""
+    print(f"| quantity | {order_label} | Richardson limit | "
+          + " | ".join(names) + " |")
+    print("|---" * (len(names) + 3) + "|")
     for column, label, unit, _ in QUANTITIES:
         p, limit = richardson(series, column)
         if limit is None:
@@ -229,18 +217,41 @@ def table():
                            for r in series) + " |")
 
 
-def grading(level):
-    """The runs of every law at one level: the effect of the grading."""
+def runs_at_level(level, family=""):
+    """Every law's runs at 2 + level and tolerance DELTA, by unknowns."""
     import glob
     rows = []
-    for path in glob.glob(os.path.join(HERE, "results-*.csv")):
+    for path in glob.glob(os.path.join(HERE, f"results-{family}*.csv")):
         tag = os.path.basename(path)[len("results-"):-len(".csv")]
         for r in csv.DictReader(open(path)):
             if int(float(r["level"])) == level and float(r["delta"]) == DELTA:
                 r = {k: (v if k == "run" else float(v)) for k, v in r.items()}
                 r["tag"] = tag
                 rows.append(r)
-    rows.sort(key=lambda r: r["unknowns"])
+    return sorted(rows, key=lambda r: r["unknowns"])
+
+
+def table():
+    rows = read_results()
+    series = sorted([r for r in rows if r["delta"] == DELTA],
+                    key=lambda r: r["level"])
+    print("| mesh | unknowns | patch cells [mm] | "
+          + " | ".join(f"{label} [{unit}]" for _, label, unit, _ in QUANTITIES)
+          + " | steps | wall [s] |")
+    print("|---" * (len(QUANTITIES) + 5) + "|")
+    for r in sorted(rows, key=lambda r: (r["level"], -r["delta"])):
+        print(f"| 2 + {int(r['level'])}, δ = {r['delta']:g} | "
+              f"{int(r['unknowns'])} | {r['patch_cell_mm']:.2f} | "
+              + " | ".join(f"{r[c]:.4g}" for c, *_ in QUANTITIES)
+              + f" | {int(r['steps'])} | {r['wall_s']:.0f} |")
+    print()
+    richardson_table(series, [f"2 + {int(r['level'])}" for r in series],
+                     "observed order")
+
+
+def grading(level):
+    """The runs of every law at one level: the effect of the grading."""
+    rows = runs_at_level(level)
     print(f"| 2 + {level}: law | unknowns | "
           + " | ".join(f"{label} [{unit}]" for _, label, unit, _ in QUANTITIES)
           + " | wall [s] |")
@@ -255,39 +266,18 @@ def grading(level):
     d = [float(r["tag"][len("centre"):]) for r in centre]
     if len(centre) >= 3 and all(b == 2 * a for a, b in zip(d[-3:], d[-2:])):
         print()
-        print(f"| quantity | order in the distance | limit | "
-              + " | ".join(f"centre {x:g}" for x in d) + " |")
-        print("|---" * (len(d) + 3) + "|")
-        for column, label, unit, _ in QUANTITIES:
-            p, limit = richardson(centre, column)
-            if limit is None:
-                print(f"| {label} [{unit}] | – | – | "
-                      + " | ".join(f"{r[column]:.4g}" for r in centre) + " |")
-                continue
-            print(f"| {label} [{unit}] | {p:.2f} | {limit:.4g} | "
-                  + " | ".join(f"{100 * (r[column] / limit - 1):+.1f} %"
-                               for r in centre) + " |")
+        richardson_table(centre, [f"centre {x:g}" for x in d],
+                         "order in the distance")
 
 
 def plot_grading(level):
     """Event statistics at 2 + K against the unknowns, one line per law."""
-    import glob
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(3, 3, figsize=(11, 9))
     for family, marker in (("centre", "o-"), ("band", "s--")):
-        rows = []
-        for path in glob.glob(os.path.join(HERE, f"results-{family}*.csv")):
-            tag = os.path.basename(path)[len("results-"):-len(".csv")]
-            for r in csv.DictReader(open(path)):
-                if int(float(r["level"])) == level and \
-                        float(r["delta"]) == DELTA:
-                    r = {k: (v if k == "run" else float(v))
-                         for k, v in r.items()}
-                    r["tag"] = tag
-                    rows.append(r)
-        rows.sort(key=lambda r: r["unknowns"])
+        rows = runs_at_level(level, family)
         for ax, (column, label, unit, _) in zip(axes.flat, QUANTITIES):
             ax.semilogx([r["unknowns"] for r in rows],
                         [r[column] for r in rows], marker,
@@ -311,7 +301,7 @@ def plot():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     rows = read_results()
-    delta = max(r["delta"] for r in rows)
+    delta = DELTA
     series = sorted([r for r in rows if r["delta"] == delta],
                     key=lambda r: r["level"])
     fig, axes = plt.subplots(3, 3, figsize=(11, 9))

@@ -65,7 +65,7 @@ namespace rsfcycle
                                      cell->minimum_vertex_distance();
         }
       const Point<dim> c = cell->center();
-      return scene.distance_to_patch(BoundingBox<dim>({c, c})) <
+      return scene.distance_to_patch(BoundingBox<dim>({c, c}), 0.) <
              mesh.refinement_distance * cell->diameter();
     }
 

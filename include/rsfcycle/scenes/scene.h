@@ -55,8 +55,7 @@ namespace rsfcycle
        * Discretisation::make_grid() use it.
        */
       virtual double
-      distance_to_patch(const BoundingBox<dim> &box,
-                        double                  margin = 0) const = 0;
+      distance_to_patch(const BoundingBox<dim> &box, double margin) const = 0;
 
       /** The region (material id) of a cell with the given centre. */
       virtual types::material_id

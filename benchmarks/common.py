@@ -24,9 +24,12 @@ def set_entry(prm_file, name, value):
 
 
 def wedge_prm(root, depth, out, end, extra=""):
-    """prm/wedge-2d.prm with 2 global and `depth` local refinements, no
-    VTU, no progress lines, no timed checkpoints."""
+    """prm/wedge-2d.prm with the grading, tolerances and correction of the
+    benchmarks' measurements (tests/wedge-2d-pinned.prm: distance 1.5,
+    delta = epsilon = 1e-5, direct), 2 global and `depth` local
+    refinements, no VTU, no progress lines, no timed checkpoints."""
     return f"""include {root}/prm/wedge-2d.prm
+include {root}/tests/wedge-2d-pinned.prm
 set End time = {end}
 set Output directory = {out}
 set Overwrite output = true

@@ -320,11 +320,13 @@ namespace rsfcycle
     prm.declare_entry("Profile interval",
                       "1",
                       Double(0),
-                      "Simulated time between rows of base-profile.csv [s]");
+                      "Simulated time between rows of base-profile.csv while "
+                      "slip is slow (max V at most 2 v0 and no event) [s]");
     prm.declare_entry("Event profile interval",
                       "0.005",
                       Double(0),
-                      "The same during events [s]");
+                      "Simulated time between rows of base-profile.csv during "
+                      "events and while max V exceeds 2 v0 [s]");
     prm.declare_entry("Event threshold",
                       "10",
                       Double(1e-300),
@@ -350,13 +352,14 @@ namespace rsfcycle
                       Integer(0),
                       "Write checkpoint.bin every this many accepted steps "
                       "(0: never) [-]");
-    prm.declare_entry("Checkpoint minutes",
-                      "10",
-                      Double(0),
-                      "... and every this many minutes of wall-clock time "
-                      "(0: never) [min]; a checkpoint is also written at the "
-                      "end, on SIGINT/SIGTERM and when the step size "
-                      "underflows");
+    prm.declare_entry(
+      "Checkpoint minutes",
+      "10",
+      Double(0),
+      "Write checkpoint.bin also every this many minutes of "
+      "wall-clock time (0: never) [min]; a checkpoint is also written at the "
+      "end, on SIGINT/SIGTERM and when the step size "
+      "underflows");
     prm.leave_subsection();
   }
 

@@ -16,6 +16,7 @@ rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
 make_wedge_prm() {
   cat > "$1.prm" <<PRM
 include $src/prm/wedge-2d.prm
+include $src/tests/wedge-2d-pinned.prm
 set End time = 250
 set Output directory = $1
 subsection Mesh

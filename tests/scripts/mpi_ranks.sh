@@ -45,14 +45,15 @@ printf 'include %s/prm/spring-slider.prm\nset End time = -1\nset Output director
   "$src" > bad.prm
 refused bad 2 "End time" bad.prm
 
-printf 'include %s/prm/wedge-2d.prm\nset End time = 1\nset Output directory = run-wedge\n' \
-  "$src" > wedge.prm
+printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 1\nset Output directory = run-wedge\n' \
+  "$src" "$src" > wedge.prm
 refused wedge 2 "Linear correction = direct.*one MPI rank.* 2" wedge.prm
 
 # kill/resume on 2 ranks
 make_wedge_prm() {
   cat > "$1.prm" <<PRM
 include $src/prm/wedge-2d.prm
+include $src/tests/wedge-2d-pinned.prm
 set End time = 250
 set Output directory = $1
 subsection Mesh

@@ -13,8 +13,8 @@ exe=$1; src=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
 n_pass=0; n_fail=0
 run_case() { # name, body, expected text in the screen output
-  printf 'include %s/prm/wedge-2d.prm\nset End time = 100\nset Output directory = %s\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Write VTU = false\nend\nsubsection Time stepping\nset Minimum step = 0.001\nend\n%b\n' \
-    "$src" "$1" "$2" > "$1.prm"
+  printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 100\nset Output directory = %s\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Write VTU = false\nend\nsubsection Time stepping\nset Minimum step = 0.001\nend\n%b\n' \
+    "$src" "$src" "$1" "$2" > "$1.prm"
   "$exe" "$1.prm" > "$1.log" 2>&1
   local status=$?
   if [ $status -eq 1 ] && grep -q "$3" "$1.log" &&

@@ -35,6 +35,7 @@ fail() { n_fail=$((n_fail + 1)); echo "FAILED: $*"; }
 make_wedge_prm() { # name, local refinements
   cat > "$1.prm" <<PRM
 include $src/prm/wedge-2d.prm
+include $src/tests/wedge-2d-pinned.prm
 set End time = 150
 set Output directory = $1
 subsection Mesh

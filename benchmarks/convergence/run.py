@@ -34,6 +34,9 @@ Usage: benchmarks/convergence/run.py [BUILD_DIR] [--levels 4,5,6,7,8,9]
        benchmarks/convergence/run.py --table | --plot  [--law ...]
        benchmarks/convergence/run.py --grading K   # every law at 2 + K
        benchmarks/convergence/run.py --plot-grading K
+       benchmarks/convergence/run.py --against RUNDIR
+           # a run folder's statistics against the converged values (the
+           # CONVERGED table below), e.g. output-wedge-2d of README command 1
 """
 import concurrent.futures
 import csv
@@ -60,6 +63,19 @@ QUANTITIES = [  # column, label, unit, scale
     ("nucleation_position_m", "nucleation", "m", 1.0),
 ]
 
+# The best estimate of the converged values (README: the limits in the
+# refinement distance at 2 + 6 plus the change 2 + 6 -> 2 + 9 at distance
+# 1.5; +-1 %), in the units of QUANTITIES' labels.
+CONVERGED = {
+    "recurrence_s": 5.26,
+    "peak_slip_rate_m_per_s": 1.37,
+    "slip_um": 188.0,
+    "rupture_width_m": 0.380,
+    "uplift_15cm_um": 51.9,
+    "uplift_30cm_um": 16.6,
+    "uplift_45cm_um": -6.41,
+}
+
 
 def arg(name, default):
     if name in sys.argv:
@@ -67,7 +83,7 @@ def arg(name, default):
     return default
 
 
-OPTS = ("--grading", "--plot-grading", "--levels", "--delta", "--events", "--jobs", "--work", "--tight",
+OPTS = ("--against", "--grading", "--plot-grading", "--levels", "--delta", "--events", "--jobs", "--work", "--tight",
         "--law", "--band", "--layers", "--distance")
 BUILD = next((a for i, a in enumerate(sys.argv[1:], 1)
               if not a.startswith("--") and sys.argv[i - 1] not in OPTS),
@@ -328,7 +344,24 @@ def plot():
     print(FIGURE)
 
 
+def against(d):
+    """A run folder's event statistics (means after the first TRANSITION
+    events) and their distance from the converged values."""
+    row = event_statistics(d)
+    print(f"{d}: {row['unknowns']} unknowns, {row['events']} events after "
+          f"the first {TRANSITION}")
+    for column, label, unit, scale in QUANTITIES:
+        line = f"  {label:15s} {row[column]:10.4g} {unit}"
+        if column in CONVERGED:
+            rel = row[column] / CONVERGED[column] - 1
+            line += (f"   converged {CONVERGED[column]:g} {unit}: "
+                     f"{100 * rel:+.1f} %")
+        print(line)
+
+
 def main():
+    if "--against" in sys.argv:
+        return against(arg("--against", ""))
     if "--table" in sys.argv:
         return table()
     if "--plot" in sys.argv:

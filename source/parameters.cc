@@ -356,10 +356,9 @@ namespace rsfcycle
       "Checkpoint minutes",
       "10",
       Double(0),
-      "Write checkpoint.bin also every this many minutes of "
-      "wall-clock time (0: never) [min]; a checkpoint is also written at the "
-      "end, on SIGINT/SIGTERM and when the step size "
-      "underflows");
+      "Write checkpoint.bin every this many minutes of wall-clock time as "
+      "well (0: never) [min]; it is also written at the end, on "
+      "SIGINT/SIGTERM and when the step size underflows");
     prm.leave_subsection();
   }
 

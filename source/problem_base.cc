@@ -69,12 +69,11 @@ namespace rsfcycle
         normal[1] = true;
         dirichlet.push_back({boundary_id::contact, ComponentMask(normal)});
       }
-      if (dim == 3)
-        {
-          std::vector<bool> lateral(dim, false);
-          lateral[dim - 1] = true;
-          dirichlet.push_back({boundary_id::lateral, ComponentMask(lateral)});
-        }
+      {
+        std::vector<bool> lateral(dim, false);
+        lateral[dim - 1] = true;
+        dirichlet.push_back({boundary_id::lateral, ComponentMask(lateral)});
+      }
 
       // The contact nodes of all ranks, rank by rank: position, lumped
       // weight and the components of their dofs.
@@ -194,7 +193,9 @@ namespace rsfcycle
     initial.u = u;
     discretisation.reinit(initial.v);
     discretisation.reinit(initial.a);
-    initial.alpha.assign(contact.n_nodes(), 0.);
+    initial.alpha.clear();
+    for (const auto &node : contact.nodes())
+      initial.alpha.push_back(scene.initial_state(node.position));
     initial.shear_traction.assign(contact.n_nodes(), 0.);
   }
 
@@ -279,7 +280,6 @@ namespace rsfcycle
       discretisation,
       contact,
       *tnnmg,
-      scene.cohesion(),
       [this](const Point<dim> &p) { return scene.along_base_coordinate(p); });
     newmark->set_timer(&timer);
     snapshots = std::make_unique<output::SnapshotWriter<dim>>(

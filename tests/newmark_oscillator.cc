@@ -48,7 +48,7 @@ public:
     return std::max(0., box.get_boundary_points().first.norm() - margin);
   }
   types::material_id
-  material_id(const Point<2> &) const override
+  material_id(const Point<2> &, types::material_id) const override
   {
     return 0;
   }
@@ -57,14 +57,11 @@ public:
   {
     scenes::Material m;
     m.density         = 1000;
+    m.bulk_modulus    = 1e6;
+    m.poisson_ratio   = 0.25;
     m.shear_viscosity = 0;
     m.bulk_viscosity  = 0;
     return m;
-  }
-  std::pair<double, double>
-  elastic_moduli() const override
-  {
-    return {1e6, 0.25};
   }
   Tensor<1, 2>
   gravity() const override
@@ -88,11 +85,6 @@ public:
     p.mu_star = 0;
     p.b       = 0;
     return p;
-  }
-  double
-  cohesion() const override
-  {
-    return 0;
   }
   double
   convergence_rate() const override

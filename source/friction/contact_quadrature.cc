@@ -196,14 +196,15 @@ namespace rsfcycle
 
     template <int dim>
     std::vector<NodePotential>
-    ContactQuadrature<dim>::potentials(const double cohesion) const
+    ContactQuadrature<dim>::potentials() const
     {
       std::vector<NodePotential> result(node_info.size());
       for (unsigned int k = 0; k < node_info.size(); ++k)
         {
-          result[k].params         = node_info[k].params;
-          result[k].normal_force   = node_info[k].normal_force;
-          result[k].cohesion_force = node_info[k].weight * cohesion;
+          result[k].params       = node_info[k].params;
+          result[k].normal_force = node_info[k].normal_force;
+          result[k].cohesion_force =
+            node_info[k].weight * node_info[k].params.cohesion;
         }
       return result;
     }

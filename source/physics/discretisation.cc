@@ -83,8 +83,10 @@ namespace rsfcycle
               cell->set_refine_flag();
           triangulation.execute_coarsening_and_refinement();
         }
-      for (const auto &cell : triangulation.active_cell_iterators())
-        cell->set_material_id(scene.material_id(cell->center()));
+      // every level: the multigrid assembles level matrices with them
+      for (const auto &cell : triangulation.cell_iterators())
+        cell->set_material_id(
+          scene.material_id(cell->center(), cell->material_id()));
     }
 
 
@@ -173,8 +175,7 @@ namespace rsfcycle
                           backstop_dofs.emplace_back(i, c);
                         fixed[i] = true;
                       }
-                    else if ((id == boundary_id::lateral && dim == 3 &&
-                              c == dim - 1) ||
+                    else if ((id == boundary_id::lateral && c == dim - 1) ||
                              (id == boundary_id::contact && c == 1))
                       fixed[i] = true;
                   }
@@ -198,14 +199,14 @@ namespace rsfcycle
       std::array<FullMatrix<double>, 3> &matrices,
       Vector<double>                    &cell_force) const
     {
-      const auto [bulk_modulus, nu] = scene.elastic_moduli();
-      const double shear_modulus =
+      const scenes::Material material     = scene.material(cell->material_id());
+      const double           bulk_modulus = material.bulk_modulus;
+      const double           nu           = material.poisson_ratio;
+      const double           shear_modulus =
         3. * bulk_modulus * (1. - 2. * nu) / (2. * (1. + nu));
-      const double           lambda  = bulk_modulus - 2. / 3. * shear_modulus;
-      const Tensor<1, dim>   gravity = scene.gravity();
-      const scenes::Material material =
-        scene.material(scene.material_id(cell->center()));
-      const double eta_lambda =
+      const double         lambda  = bulk_modulus - 2. / 3. * shear_modulus;
+      const Tensor<1, dim> gravity = scene.gravity();
+      const double         eta_lambda =
         material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
       const FEValuesExtractors::Vector displacement(0);
 

@@ -143,22 +143,26 @@ namespace rsfcycle
     Wedge<dim>::Wedge(ParameterHandler &prm)
     {
       prm.enter_subsection("Wedge");
-      length                = prm.get_double("Length");
-      depth                 = prm.get_double("Depth");
-      width                 = prm.get_double("Width");
-      patch_downdip_x       = prm.get_double("Patch down-dip end");
-      patch_length          = prm.get_double("Patch length");
-      patch_length_0        = prm.get_double("Patch length at z min");
-      patch_length_1        = prm.get_double("Patch length at z max");
-      lower_thickness       = prm.get_double("Lower region thickness");
+      length          = prm.get_double("Length");
+      depth           = prm.get_double("Depth");
+      width           = prm.get_double("Width");
+      patch_downdip_x = prm.get_double("Patch down-dip end");
+      patch_length    = prm.get_double("Patch length");
+      patch_length_0  = prm.get_double("Patch length at z min");
+      patch_length_1  = prm.get_double("Patch length at z max");
+      lower_thickness = prm.get_double("Lower region thickness");
+      double a_patch, b_minus_a_patch, a_outside, b_minus_a_outside;
+      double mu_star, v_star, L, cohesion;
       upper.density         = prm.get_double("Density upper");
       lower.density         = prm.get_double("Density lower");
       upper.shear_viscosity = prm.get_double("Shear viscosity upper");
       upper.bulk_viscosity  = prm.get_double("Bulk viscosity upper");
       lower.shear_viscosity = prm.get_double("Shear viscosity lower");
       lower.bulk_viscosity  = prm.get_double("Bulk viscosity lower");
-      bulk_modulus          = prm.get_double("Bulk modulus");
-      poisson_ratio         = prm.get_double("Poisson ratio");
+      upper.bulk_modulus    = prm.get_double("Bulk modulus");
+      upper.poisson_ratio   = prm.get_double("Poisson ratio");
+      lower.bulk_modulus    = upper.bulk_modulus;
+      lower.poisson_ratio   = upper.poisson_ratio;
       g                     = prm.get_double("Gravity");
       a_patch               = prm.get_double("Patch a");
       b_minus_a_patch       = prm.get_double("Patch b - a");
@@ -167,7 +171,7 @@ namespace rsfcycle
       mu_star               = prm.get_double("Reference friction coefficient");
       v_star                = prm.get_double("Reference slip rate");
       L                     = prm.get_double("Characteristic slip distance");
-      cohesion_value        = prm.get_double("Cohesion");
+      cohesion              = prm.get_double("Cohesion");
       v0                    = prm.get_double("Convergence rate");
       t0                    = prm.get_double("Ramp time");
       observation_x         = Utilities::string_to_double(
@@ -198,6 +202,26 @@ namespace rsfcycle
       if (lower_thickness >= depth)
         throw std::invalid_argument(
           "Wedge/Lower region thickness must be below Depth");
+
+      // The patch as a function of the point: piecewise constant on and
+      // off it, the other quantities constant.
+      const auto piecewise = [this](const double inside, const double outside) {
+        return std::make_shared<ScalarFunctionFromFunctionObject<dim>>(
+          [this, inside, outside](const Point<dim> &p) {
+            return on_patch(p) ? inside : outside;
+          });
+      };
+      const auto constant = [](const double value) {
+        return std::make_shared<Functions::ConstantFunction<dim>>(value);
+      };
+      typename FrictionField<dim>::Functions functions;
+      functions.a         = piecewise(a_patch, a_outside);
+      functions.b_minus_a = piecewise(b_minus_a_patch, b_minus_a_outside);
+      functions.L         = constant(L);
+      functions.mu_star   = constant(mu_star);
+      functions.v_star    = constant(v_star);
+      functions.cohesion  = constant(cohesion);
+      friction_field      = std::make_unique<FrictionField<dim>>(functions);
     }
 
 
@@ -234,6 +258,16 @@ namespace rsfcycle
       const double zeta = std::min(std::max(z / width, 0.), 1.);
       return {s_up,
               s_up + patch_length_0 + zeta * (patch_length_1 - patch_length_0)};
+    }
+
+
+    template <int dim>
+    bool
+    Wedge<dim>::on_patch(const Point<dim> &p) const
+    {
+      const auto [s_up, s_down] = patch_extent(dim == 3 ? p[2] : 0.);
+      const double tol          = 1e-10;
+      return p[0] >= s_up - tol && p[0] <= s_down + tol;
     }
 
 
@@ -318,7 +352,8 @@ namespace rsfcycle
 
     template <int dim>
     types::material_id
-    Wedge<dim>::material_id(const Point<dim> &cell_center) const
+    Wedge<dim>::material_id(const Point<dim> &cell_center,
+                            types::material_id) const
     {
       const Point<dim> x = to_physical(cell_center);
       return (x[1] < -(depth - lower_thickness)) ? material_id::lower :
@@ -331,14 +366,6 @@ namespace rsfcycle
     Wedge<dim>::material(const types::material_id id) const
     {
       return id == material_id::lower ? lower : upper;
-    }
-
-
-    template <int dim>
-    std::pair<double, double>
-    Wedge<dim>::elastic_moduli() const
-    {
-      return {bulk_modulus, poisson_ratio};
     }
 
 
@@ -378,24 +405,7 @@ namespace rsfcycle
     friction::Parameters
     Wedge<dim>::friction_parameters(const Point<dim> &p) const
     {
-      const auto [s_up, s_down] = patch_extent(dim == 3 ? p[2] : 0.);
-      const double tol          = 1e-10;
-      const bool   on_patch     = p[0] >= s_up - tol && p[0] <= s_down + tol;
-      friction::Parameters params;
-      params.a = on_patch ? a_patch : a_outside;
-      params.b = params.a + (on_patch ? b_minus_a_patch : b_minus_a_outside);
-      params.mu_star = mu_star;
-      params.v_star  = v_star;
-      params.L       = L;
-      return params;
-    }
-
-
-    template <int dim>
-    double
-    Wedge<dim>::cohesion() const
-    {
-      return cohesion_value;
+      return friction_field->parameters(p);
     }
 
 

@@ -14,13 +14,11 @@ namespace rsfcycle
       physics::Discretisation<dim>                     &discretisation,
       const friction::ContactQuadrature<dim>           &contact,
       solvers::TNNMG                                   &tnnmg,
-      const double                                      cohesion,
       std::function<double(const dealii::Point<dim> &)> along_base)
       : solver(solver)
       , discretisation(discretisation)
       , contact(contact)
       , tnnmg(tnnmg)
-      , cohesion(cohesion)
       , state_law(friction::state_law_from_name(solver.state_law))
       , along_base(std::move(along_base))
     {}
@@ -67,9 +65,8 @@ namespace rsfcycle
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
 
-      std::vector<friction::NodePotential> potentials =
-        contact.potentials(cohesion);
-      solvers::SpatialProblem problem;
+      std::vector<friction::NodePotential> potentials = contact.potentials();
+      solvers::SpatialProblem              problem;
       problem.local_A     = &A;
       problem.assembled_A = [this, tau, dynamic]() -> const auto &
       {

@@ -81,11 +81,11 @@ namespace rsfcycle
       tangential_displacement(const la::Vector &u) const;
 
       /**
-       * The node potentials phi_i of (13) with the state alpha not yet set;
-       * C the cohesion [Pa].
+       * The node potentials phi_i of (13) with the state alpha not yet set
+       * (the cohesion force w_i C_i from the node's parameters).
        */
       std::vector<NodePotential>
-      potentials(double cohesion) const;
+      potentials() const;
 
       const std::vector<NodeInfo> &
       nodes() const

@@ -33,11 +33,12 @@ namespace rsfcycle
      */
     struct Parameters
     {
-      double a       = 0.02;    // direct effect [-]
-      double b       = 0.005;   // evolution effect [-]
-      double mu_star = 0.7;     // reference friction coefficient [-]
-      double v_star  = 50e-6;   // reference slip rate [m/s]
-      double L       = 22.5e-6; // characteristic slip distance [m]
+      double a        = 0.02;    // direct effect [-]
+      double b        = 0.005;   // evolution effect [-]
+      double mu_star  = 0.7;     // reference friction coefficient [-]
+      double v_star   = 50e-6;   // reference slip rate [m/s]
+      double L        = 22.5e-6; // characteristic slip distance [m]
+      double cohesion = 0;       // C [Pa]: stick below w C (MODEL.md (13))
 
       /** log V_theta = log V* - (mu* + b alpha) / a, eq. (2). */
       double

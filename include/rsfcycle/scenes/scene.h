@@ -22,6 +22,8 @@ namespace rsfcycle
     struct Material
     {
       double density         = 900; // [kg/m^3]
+      double bulk_modulus    = 5e4; // K [Pa]
+      double poisson_ratio   = 0.3; // nu [-]
       double shear_viscosity = 1e3; // [Pa s]
       double bulk_viscosity  = 1e3; // [Pa s]
     };
@@ -57,17 +59,18 @@ namespace rsfcycle
       virtual double
       distance_to_patch(const BoundingBox<dim> &box, double margin) const = 0;
 
-      /** The region (material id) of a cell with the given centre. */
+      /**
+       * The region (material id) of a cell (on any level) with the given
+       * centre; `mesh_id` is the id the cell has from the coarse mesh (a
+       * mesh file's volume tag, inherited by the children).
+       */
       virtual types::material_id
-      material_id(const Point<dim> &cell_center) const = 0;
+      material_id(const Point<dim>  &cell_center,
+                  types::material_id mesh_id) const = 0;
 
-      /** Density and viscosities of a region. */
+      /** Density, elastic moduli and viscosities of a region. */
       virtual Material
       material(types::material_id id) const = 0;
-
-      /** Bulk modulus K [Pa] and Poisson ratio nu of the elastic tensor. */
-      virtual std::pair<double, double>
-      elastic_moduli() const = 0;
 
       /** Body force per unit mass in the rotated frame [m/s^2]. */
       virtual Tensor<1, dim>
@@ -81,13 +84,22 @@ namespace rsfcycle
       virtual Tensor<1, dim>
       backstop_velocity(double t) const = 0;
 
-      /** Rate-and-state parameters of the base at a point of the base. */
+      /**
+       * Rate-and-state parameters and cohesion of the base at a point of
+       * the base.
+       */
       virtual friction::Parameters
       friction_parameters(const Point<dim> &p) const = 0;
 
-      /** Cohesion C of the base [Pa]. */
+      /**
+       * The initial state at a point of the base, as alpha =
+       * log(theta V* / L) (MODEL.md §2); 0 is theta = L / V*.
+       */
       virtual double
-      cohesion() const = 0;
+      initial_state(const Point<dim> &) const
+      {
+        return 0;
+      }
 
       /** The plate convergence rate v0 [m/s] (event threshold, output). */
       virtual double

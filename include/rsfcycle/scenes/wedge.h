@@ -1,6 +1,8 @@
 #ifndef rsfcycle_scenes_wedge_h
 #define rsfcycle_scenes_wedge_h
 
+#include <memory>
+#include <rsfcycle/scenes/friction_field.h>
 #include <rsfcycle/scenes/scene.h>
 
 namespace rsfcycle
@@ -29,11 +31,10 @@ namespace rsfcycle
       distance_to_patch(const BoundingBox<dim> &box,
                         double                  margin) const override;
       types::material_id
-      material_id(const Point<dim> &cell_center) const override;
+      material_id(const Point<dim>  &cell_center,
+                  types::material_id mesh_id) const override;
       Material
       material(types::material_id id) const override;
-      std::pair<double, double>
-      elastic_moduli() const override;
       Tensor<1, dim>
       gravity() const override;
       Tensor<1, dim>
@@ -42,8 +43,6 @@ namespace rsfcycle
       backstop_velocity(double t) const override;
       friction::Parameters
       friction_parameters(const Point<dim> &p) const override;
-      double
-      cohesion() const override;
       double
       convergence_rate() const override;
       std::vector<std::pair<std::string, Point<dim>>>
@@ -61,17 +60,21 @@ namespace rsfcycle
       std::pair<double, double>
       patch_extent(double z) const;
 
+      /** Whether a point of the base lies on the patch (ends included). */
+      bool
+      on_patch(const Point<dim> &p) const;
+
     private:
       double   length, depth, width;
       double   patch_downdip_x, patch_length, patch_length_0, patch_length_1;
       double   lower_thickness;
       Material upper, lower;
-      double   bulk_modulus, poisson_ratio, g;
-      double   a_patch, b_minus_a_patch, a_outside, b_minus_a_outside;
-      double   mu_star, v_star, L, cohesion_value;
-      double   v0, t0;
-      std::vector<double> observation_x;
-      double              cos_phi, sin_phi;
+      double   g;
+      /** The friction on and off the patch, as functions of the point. */
+      std::unique_ptr<const FrictionField<dim>> friction_field;
+      double                                    v0, t0;
+      std::vector<double>                       observation_x;
+      double                                    cos_phi, sin_phi;
     };
   } // namespace scenes
 } // namespace rsfcycle

@@ -75,13 +75,12 @@ namespace rsfcycle
     public:
       /**
        * `along_base` gives the position along the base [m] that diagnoses
-       * name; C the cohesion [Pa].
+       * name.
        */
       NewmarkStep(const SolverParameters                 &solver,
                   physics::Discretisation<dim>           &discretisation,
                   const friction::ContactQuadrature<dim> &contact,
                   solvers::TNNMG                         &tnnmg,
-                  double                                  cohesion,
                   std::function<double(const dealii::Point<dim> &)> along_base);
 
       /**
@@ -170,7 +169,6 @@ namespace rsfcycle
       physics::Discretisation<dim>                     &discretisation;
       const friction::ContactQuadrature<dim>           &contact;
       solvers::TNNMG                                   &tnnmg;
-      const double                                      cohesion;
       const friction::StateLaw                          state_law;
       std::function<double(const dealii::Point<dim> &)> along_base;
 

@@ -1,0 +1,85 @@
+#ifndef rsfcycle_scenes_friction_field_h
+#define rsfcycle_scenes_friction_field_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <memory>
+#include <rsfcycle/friction/rate_state.h>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    using namespace dealii;
+
+    /**
+     * The rate-and-state parameters, the cohesion and the initial state of
+     * a contact as functions of position: the one mechanism through which
+     * every continuum scene describes its fault. The wedge builds the
+     * functions from its patch (piecewise constant), the mesh-file scene
+     * parses them from the .prm (muparser expressions in x, y, z); both
+     * hand the solver the same friction::Parameters per node.
+     */
+    template <int dim>
+    class FrictionField
+    {
+    public:
+      /** One scalar function per quantity. */
+      struct Functions
+      {
+        std::shared_ptr<const Function<dim>> a;         // [-]
+        std::shared_ptr<const Function<dim>> b_minus_a; // [-]
+        std::shared_ptr<const Function<dim>> L;         // [m]
+        std::shared_ptr<const Function<dim>> mu_star;   // [-]
+        std::shared_ptr<const Function<dim>> v_star;    // [m/s]
+        std::shared_ptr<const Function<dim>> cohesion;  // [Pa]
+        /** theta_0 [s]; null: theta_0 = L / V*, i.e. alpha = 0. */
+        std::shared_ptr<const Function<dim>> initial_state;
+      };
+
+      explicit FrictionField(Functions functions);
+
+      /**
+       * Declare the entries of the expressions (in the current
+       * subsection).
+       */
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /**
+       * Parse the expressions of the current subsection (named `section` in
+       * error messages). A malformed expression throws
+       * std::invalid_argument naming the entry.
+       */
+      static FrictionField
+      parse(ParameterHandler &prm, const std::string &section);
+
+      /** Parameters and cohesion at x. */
+      friction::Parameters
+      parameters(const Point<dim> &x) const;
+
+      /** The initial state alpha = log(theta_0 V* / L) at x. */
+      double
+      initial_alpha(const Point<dim> &x) const;
+
+      /** b - a at x (> 0: rate weakening). */
+      double
+      b_minus_a(const Point<dim> &x) const;
+
+      /**
+       * Throw std::invalid_argument naming the entry (of `section`) and x
+       * unless every value at x lies in its range: a, L, V*, theta_0 > 0,
+       * b >= 0, mu* and the cohesion >= 0, all finite.
+       */
+      void
+      check(const Point<dim> &x, const std::string &section) const;
+
+    private:
+      Functions f;
+    };
+  } // namespace scenes
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,188 @@
+#include <cmath>
+#include <deal.II/base/function_parser.h>
+#include <rsfcycle/format.h>
+#include <rsfcycle/scenes/friction_field.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    namespace
+    {
+      /** The entries: name, default expression, documentation. */
+      struct Entry
+      {
+        const char *name;
+        const char *default_value;
+        const char *documentation;
+      };
+
+      const Entry entries[] = {
+        {"a",
+         "0.002",
+         "Direct-effect parameter a [-] on the contact, a function of the "
+         "mesh's coordinates x, y (and z in 3D) [m]; > 0"},
+        {"b - a",
+         "0.015",
+         "b - a [-] on the contact, a function of x, y (and z in 3D) [m]; "
+         "> 0 is rate weakening, where the mesh is refined toward the "
+         "contact"},
+        {"Characteristic slip distance",
+         "22.5e-6",
+         "L [m] on the contact, a function of x, y (and z in 3D) [m]; > 0"},
+        {"Reference friction coefficient",
+         "0.7",
+         "mu* [-] on the contact, a function of x, y (and z in 3D) [m]; "
+         ">= 0"},
+        {"Reference slip rate",
+         "50e-6",
+         "V* [m/s] on the contact, a function of x, y (and z in 3D) [m]; "
+         "> 0"},
+        {"Cohesion",
+         "0",
+         "Cohesion C [Pa] on the contact, a function of x, y (and z in 3D) "
+         "[m]; >= 0"},
+        {"Initial state",
+         "",
+         "Initial state theta_0 [s] on the contact, a function of x, y (and "
+         "z in 3D) [m]; > 0. Empty: theta_0 = L / V* (the steady state at "
+         "V*)"}};
+
+
+      /** A muparser expression of the coordinates, checked once. */
+      template <int dim>
+      std::shared_ptr<const Function<dim>>
+      parse_expression(const std::string &expression, const std::string &entry)
+      {
+        const std::string variables = dim == 2 ? "x,y" : "x,y,z";
+        auto              function  = std::make_shared<FunctionParser<dim>>(1);
+        try
+          {
+            function->initialize(variables, expression, {{"pi", M_PI}}, false);
+            // deal.II parses on the first evaluation
+            function->value(Point<dim>());
+          }
+        catch (const std::exception &)
+          {
+            throw std::invalid_argument(
+              entry + " = " + expression + ": not an expression of " +
+              variables + " (muparser syntax, e.g. if(x > 0.1, 0.002, 0.02))");
+          }
+        return function;
+      }
+    } // namespace
+
+
+    template <int dim>
+    FrictionField<dim>::FrictionField(Functions functions)
+      : f(std::move(functions))
+    {}
+
+
+    template <int dim>
+    void
+    FrictionField<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      for (const Entry &entry : entries)
+        prm.declare_entry(entry.name,
+                          entry.default_value,
+                          Patterns::Anything(),
+                          entry.documentation);
+    }
+
+
+    template <int dim>
+    FrictionField<dim>
+    FrictionField<dim>::parse(ParameterHandler &prm, const std::string &section)
+    {
+      const auto get = [&](const char *name) {
+        return parse_expression<dim>(prm.get(name), section + "/" + name);
+      };
+      Functions functions;
+      functions.a         = get("a");
+      functions.b_minus_a = get("b - a");
+      functions.L         = get("Characteristic slip distance");
+      functions.mu_star   = get("Reference friction coefficient");
+      functions.v_star    = get("Reference slip rate");
+      functions.cohesion  = get("Cohesion");
+      if (!prm.get("Initial state").empty())
+        functions.initial_state = get("Initial state");
+      return FrictionField(functions);
+    }
+
+
+    template <int dim>
+    friction::Parameters
+    FrictionField<dim>::parameters(const Point<dim> &x) const
+    {
+      friction::Parameters p;
+      p.a        = f.a->value(x);
+      p.b        = p.a + f.b_minus_a->value(x);
+      p.L        = f.L->value(x);
+      p.mu_star  = f.mu_star->value(x);
+      p.v_star   = f.v_star->value(x);
+      p.cohesion = f.cohesion->value(x);
+      return p;
+    }
+
+
+    template <int dim>
+    double
+    FrictionField<dim>::initial_alpha(const Point<dim> &x) const
+    {
+      if (!f.initial_state)
+        return 0;
+      return std::log(f.initial_state->value(x) * f.v_star->value(x) /
+                      f.L->value(x));
+    }
+
+
+    template <int dim>
+    double
+    FrictionField<dim>::b_minus_a(const Point<dim> &x) const
+    {
+      return f.b_minus_a->value(x);
+    }
+
+
+    template <int dim>
+    void
+    FrictionField<dim>::check(const Point<dim>  &x,
+                              const std::string &section) const
+    {
+      const friction::Parameters p  = parameters(x);
+      std::string                at = "(";
+      for (unsigned int d = 0; d < dim; ++d)
+        at += (d ? ", " : "") + format_number(x[d]);
+      at += ") m";
+      const auto require = [&](const bool   ok,
+                               const char  *entry,
+                               const double value,
+                               const char  *range) {
+        if (!ok || !std::isfinite(value))
+          throw std::invalid_argument(section + "/" + entry + " = " +
+                                      format_number(value) + " at " + at +
+                                      ": must be " + range);
+      };
+      require(p.a > 0, "a", p.a, "> 0");
+      require(p.b >= 0, "b - a", p.b - p.a, ">= -a (b >= 0)");
+      require(p.L > 0, "Characteristic slip distance", p.L, "> 0");
+      require(p.mu_star >= 0,
+              "Reference friction coefficient",
+              p.mu_star,
+              ">= 0");
+      require(p.v_star > 0, "Reference slip rate", p.v_star, "> 0");
+      require(p.cohesion >= 0, "Cohesion", p.cohesion, ">= 0");
+      if (f.initial_state)
+        {
+          const double theta = f.initial_state->value(x);
+          require(theta > 0, "Initial state", theta, "> 0");
+        }
+    }
+
+
+    template class FrictionField<2>;
+    template class FrictionField<3>;
+  } // namespace scenes
+} // namespace rsfcycle

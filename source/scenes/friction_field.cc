@@ -1,7 +1,10 @@
 #include <cmath>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+#include <iostream>
 #include <rsfcycle/format.h>
 #include <rsfcycle/scenes/friction_field.h>
+#include <sstream>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -57,6 +60,10 @@ namespace rsfcycle
       {
         const std::string variables = dim == 2 ? "x,y" : "x,y,z";
         auto              function  = std::make_shared<FunctionParser<dim>>(1);
+        // deal.II writes muparser's diagnosis to std::cerr before it
+        // throws: keep it for the one-line message instead
+        std::ostringstream diagnosis;
+        std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
         try
           {
             function->initialize(variables, expression, {{"pi", M_PI}}, false);
@@ -65,10 +72,18 @@ namespace rsfcycle
           }
         catch (const std::exception &)
           {
+            std::cerr.rdbuf(cerr_buffer);
+            std::string        why;
+            std::istringstream lines(diagnosis.str());
+            for (std::string line; std::getline(lines, line);)
+              if (line.rfind("Message:", 0) == 0)
+                why = " (" + Utilities::trim(line.substr(8)) + ")";
             throw std::invalid_argument(
               entry + " = " + expression + ": not an expression of " +
-              variables + " (muparser syntax, e.g. if(x > 0.1, 0.002, 0.02))");
+              variables + why +
+              "; muparser syntax, e.g. if(x > 0.1, 0.002, 0.02)");
           }
+        std::cerr.rdbuf(cerr_buffer);
         return function;
       }
     } // namespace

@@ -1,4 +1,5 @@
 #include <rsfcycle/problem_base.h>
+#include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/registry.h>
 #include <rsfcycle/scenes/spring_slider.h>
 #include <rsfcycle/scenes/wedge.h>
@@ -11,7 +12,7 @@ namespace rsfcycle
     std::string
     scene_names()
     {
-      return "wedge|spring-slider";
+      return "wedge|mesh-file|spring-slider";
     }
 
 
@@ -19,6 +20,7 @@ namespace rsfcycle
     declare_scene_parameters(ParameterHandler &prm)
     {
       Wedge<2>::declare_parameters(prm);
+      MeshFile<2>::declare_parameters(prm);
       SpringSlider::declare_parameters(prm);
     }
 
@@ -29,6 +31,8 @@ namespace rsfcycle
     {
       if (name == "wedge")
         return std::make_unique<Wedge<dim>>(prm);
+      if (name == "mesh-file")
+        return std::make_unique<MeshFile<dim>>(prm);
       throw std::invalid_argument("Scene = " + name + ": allowed are " +
                                   scene_names());
     }

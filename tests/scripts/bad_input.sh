@@ -55,6 +55,50 @@ check event-interval "Event output interval" 'subsection Output\nset Event outpu
 check max-iterations "Maximum fixed-point iterations" 'subsection Solver\nset Maximum fixed-point iterations = 0\nend'
 check bool "Adaptive" 'subsection Time stepping\nset Adaptive = maybe\nend'
 
+# Scene = mesh-file (issue 16): tags, cells, the contact's plane, the
+# vectors and the function-valued friction; the meshes are in tests/meshes.
+check_mesh() { # name, expected word, mesh (in tests/meshes), prm body
+  local name=$1 word=$2 mesh=$3 body=$4
+  printf 'include %s/prm/wedge-2d-mesh.prm\nset Output directory = run-%s\nsubsection Mesh file\nset File = %s/tests/meshes/%s\n%b\nend\n' \
+    "$src" "$name" "$src" "$mesh" "$body" > "$name.prm"
+  check_file "$name" "$word"
+}
+check_file() { # name, expected word: run NAME.prm, check as check() does
+  local name=$1 word=$2
+  "$exe" "$name.prm" > "$name.out" 2> "$name.err"
+  local status=$? lines
+  lines=$(wc -l < "$name.err")
+  if [ $status -ne 0 ] && [ "$lines" -eq 1 ] &&
+     grep -q "^rsfcycle: error: " "$name.err" &&
+     grep -qi -- "$word" "$name.err" && [ ! -e "run-$name" ]; then
+    n_pass=$((n_pass + 1))
+  else
+    n_fail=$((n_fail + 1))
+    echo "FAILED $name (exit $status, $lines lines, expected '$word'):"
+    cat "$name.err"
+  fi
+  echo "$name: $(cat "$name.err")"
+}
+simplex=wedge-simplex-2d.msh
+one_material='set Materials = 10: density 900, bulk modulus 5e4, Poisson ratio 0.3, shear viscosity 1e3, bulk viscosity 1e3'
+check_mesh mesh-missing "File = " no-such.msh "$one_material"
+check_mesh mesh-triangles "quadrilaterals" triangles-2d.msh "$one_material"
+check_mesh mesh-tag-without-role "boundary tag 3 has no role" $simplex "$one_material\nset Boundary roles = 1: contact, 2: load"
+check_mesh mesh-role-without-tag "tag 7 (free) is not a boundary tag" $simplex "$one_material\nset Boundary roles = 1: contact, 2: load, 3: free, 7: free"
+check_mesh mesh-no-contact "no tag has the role contact" $simplex "$one_material\nset Boundary roles = 1: free, 2: load, 3: free"
+check_mesh mesh-two-roles "tag 3 has two roles" $simplex "$one_material\nset Boundary roles = 1: contact, 2: load, 3: free, 3: load"
+check_mesh mesh-unknown-role "Boundary roles" $simplex "$one_material\nset Boundary roles = 1: contact, 2: push, 3: free"
+check_mesh mesh-volume-without-material "volume tag 10 has no material" $simplex 'set Materials = 11: density 900, bulk modulus 5e4, Poisson ratio 0.3, shear viscosity 1e3, bulk viscosity 1e3'
+check_mesh mesh-material-property "Poisson ratio" $simplex 'set Materials = 10: density 900, bulk modulus 5e4, Poisson ratio 0.6, shear viscosity 1e3, bulk viscosity 1e3'
+check_mesh mesh-curved-contact "not planar" bent-2d.msh "$one_material"
+check_mesh mesh-free-slip "free-slip" $simplex "$one_material\nset Boundary roles = 1: contact, 2: load, 3: free-slip"
+check_mesh mesh-load-normal "Load velocity" $simplex "$one_material\nset Load velocity = 0, -50e-6"
+check_mesh mesh-gravity-components "Gravity" $simplex "$one_material\nset Gravity = 0, 0, -9.81"
+check_mesh mesh-observation "Observation points" $simplex "$one_material\nset Observation points = far: 5, 0"
+check_mesh mesh-expression "Friction/a" $simplex "$one_material\nsubsection Friction\nset a = if(x >\nend"
+check_mesh mesh-negative-a "Friction/a" $simplex "$one_material\nsubsection Friction\nset a = 0.01 - x\nend"
+check_mesh mesh-initial-state "Friction/Initial state" $simplex "$one_material\nsubsection Friction\nset Initial state = -1\nend"
+
 # missing parameter file
 "$exe" no-such-file.prm > /dev/null 2> missing.err
 if [ $? -ne 0 ] && [ "$(wc -l < missing.err)" -eq 1 ] && grep -q "no-such-file.prm" missing.err

@@ -1,0 +1,125 @@
+#ifndef rsfcycle_scenes_mesh_file_h
+#define rsfcycle_scenes_mesh_file_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/numerics/rtree.h>
+#include <map>
+#include <memory>
+#include <rsfcycle/scenes/friction_field.h>
+#include <rsfcycle/scenes/scene.h>
+#include <string>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    /**
+     * A scene that is pure data: a gmsh mesh (quadrilaterals in 2D,
+     * hexahedra in 3D) whose physical tags the .prm maps to roles
+     * (boundaries: contact, load, free, free-slip; volumes: materials),
+     * friction parameters and initial state as functions of the mesh's
+     * coordinates (FrictionField), gravity and the load velocity as
+     * vectors.
+     *
+     * The contact must be planar. The scene rotates the mesh into the
+     * solver's frame (MODEL.md §1: contact in y = 0, body above it, x down
+     * dip where gravity defines a dip) and every vector with it; the
+     * functions and observation points of the .prm stay in the mesh's
+     * coordinates. Free-slip boundaries fix one Cartesian component of the
+     * rotated frame, the last one: in 2D they must be parallel to the
+     * contact, in 3D perpendicular to it and all with one normal (it
+     * becomes z).
+     */
+    template <int dim>
+    class MeshFile : public Scene<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /**
+       * Parse the parameters, read and check the mesh: bad input throws
+       * std::invalid_argument with a one-line message naming the entry.
+       */
+      explicit MeshFile(ParameterHandler &prm);
+
+      void
+      create_coarse_mesh(Triangulation<dim> &tria) const override;
+      double
+      distance_to_patch(const BoundingBox<dim> &box,
+                        double                  margin) const override;
+      types::material_id
+      material_id(const Point<dim>  &cell_center,
+                  types::material_id mesh_id) const override;
+      Material
+      material(types::material_id id) const override;
+      Tensor<1, dim>
+      gravity() const override;
+      Tensor<1, dim>
+      vertical() const override;
+      Tensor<1, dim>
+      backstop_velocity(double t) const override;
+      friction::Parameters
+      friction_parameters(const Point<dim> &p) const override;
+      double
+      initial_state(const Point<dim> &p) const override;
+      double
+      convergence_rate() const override;
+      std::vector<std::pair<std::string, Point<dim>>>
+      observation_points() const override;
+      double
+      along_base_coordinate(const Point<dim> &p) const override;
+
+      /** Mesh coordinates of a point of the rotated frame. */
+      Point<dim>
+      to_physical(const Point<dim> &p) const;
+
+      /** Rotated-frame coordinates of a point of the mesh. */
+      Point<dim>
+      from_physical(const Point<dim> &x) const;
+
+      /** The boxes (rotated frame) whose union is the patch. */
+      const std::vector<BoundingBox<dim>> &
+      patch() const
+      {
+        return patch_boxes;
+      }
+
+    private:
+      /** Rotation R (rows: the rotated axes in mesh coordinates) and origin. */
+      Tensor<2, dim> rotation;
+      Point<dim>     origin;
+      /** along-base coordinate s = along_sign x' - along_offset. */
+      double along_sign = 1, along_offset = 0;
+
+      /** The coarse mesh in the rotated frame with rsfcycle's ids. */
+      Triangulation<dim> coarse;
+
+      std::map<types::material_id, Material> materials;
+      Tensor<1, dim>                         g, up, load_velocity;
+      /** The load velocity in the rotated frame, parallel to the contact. */
+      Tensor<1, dim>                                  load_rotated;
+      double                                          ramp_time;
+      std::vector<std::pair<std::string, Point<dim>>> observation;
+      std::unique_ptr<const FrictionField<dim>>       friction_field;
+
+      /**
+       * The rate-weakening (b - a > 0) part of the contact as boxes in the
+       * rotated frame (flat, in y = 0): intervals in 2D, strips in 3D.
+       */
+      std::vector<BoundingBox<dim>> patch_boxes;
+      RTree<BoundingBox<dim>>       patch_tree;
+
+      void
+      read_mesh(const std::string &file, ParameterHandler &prm);
+      void
+      assign_roles(const std::map<types::boundary_id, std::string> &roles);
+      void
+      sample_patch(unsigned int n_refinements);
+    };
+  } // namespace scenes
+} // namespace rsfcycle
+
+#endif

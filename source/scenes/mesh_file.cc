@@ -1,0 +1,765 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <fstream>
+#include <limits>
+#include <rsfcycle/format.h>
+#include <rsfcycle/ids.h>
+#include <rsfcycle/scenes/mesh_file.h>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    namespace
+    {
+      const std::string section = "Mesh file";
+
+      [[noreturn]] void
+      fail(const std::string &entry, const std::string &message)
+      {
+        throw std::invalid_argument(section + "/" + entry + message);
+      }
+
+
+      std::string
+      format_point(const double *x, const unsigned int n)
+      {
+        std::string s = "(";
+        for (unsigned int d = 0; d < n; ++d)
+          s += (d ? ", " : "") + format_number(x[d]);
+        return s + ")";
+      }
+
+
+      template <int dim>
+      Tensor<1, dim>
+      parse_vector(const std::string &text, const std::string &entry)
+      {
+        const auto parts = Utilities::split_string_list(text, ',');
+        if (parts.size() != dim)
+          fail(entry,
+               " = " + text + ": needs " + std::to_string(dim) +
+                 " components (x, y" + (dim == 3 ? ", z" : "") + ")");
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = Utilities::string_to_double(parts[d]);
+        return v;
+      }
+
+
+      /** "1: contact, 2: load": tag -> role, each tag with one role. */
+      std::map<types::boundary_id, std::string>
+      parse_roles(const std::string &text)
+      {
+        const std::set<std::string>               allowed = {"contact",
+                                                             "load",
+                                                             "free",
+                                                             "free-slip"};
+        std::map<types::boundary_id, std::string> roles;
+        for (const auto &item : Utilities::split_string_list(text, ','))
+          {
+            const auto pair = Utilities::split_string_list(item, ':');
+            if (pair.size() != 2 || allowed.count(pair[1]) == 0)
+              fail("Boundary roles",
+                   ": '" + item +
+                     "' is not 'tag: role' with role contact, load, free or "
+                     "free-slip");
+            const auto tag = static_cast<types::boundary_id>(
+              Utilities::string_to_int(pair[0]));
+            const auto [it, inserted] = roles.emplace(tag, pair[1]);
+            if (!inserted && it->second != pair[1])
+              fail("Boundary roles",
+                   ": tag " + pair[0] + " has two roles (" + it->second + ", " +
+                     pair[1] + ")");
+          }
+        return roles;
+      }
+
+
+      /**
+       * "10: density 900, bulk modulus 5e4, Poisson ratio 0.3, shear
+       * viscosity 1e3, bulk viscosity 1e3; 11: ...".
+       */
+      std::map<types::material_id, Material>
+      parse_materials(const std::string &text)
+      {
+        const std::string                      entry = "Materials";
+        std::map<types::material_id, Material> materials;
+        for (const auto &region : Utilities::split_string_list(text, ';'))
+          {
+            const auto colon = region.find(':');
+            if (colon == std::string::npos)
+              fail(entry, ": '" + region + "' is not 'tag: properties'");
+            const auto tag =
+              static_cast<types::material_id>(Utilities::string_to_int(
+                Utilities::trim(region.substr(0, colon))));
+            std::map<std::string, double> values;
+            for (const auto &item :
+                 Utilities::split_string_list(region.substr(colon + 1), ','))
+              {
+                const auto space = item.find_last_of(' ');
+                if (space == std::string::npos)
+                  fail(entry, ": '" + item + "' is not 'name value'");
+                values[Utilities::trim(item.substr(0, space))] =
+                  Utilities::string_to_double(item.substr(space + 1));
+              }
+            Material   m;
+            const auto take = [&](const std::string &name,
+                                  const double       low,
+                                  const double       high,
+                                  const std::string &range) {
+              const auto it = values.find(name);
+              if (it == values.end())
+                fail(entry,
+                     ": tag " + std::to_string(tag) + " has no '" + name +
+                       "' (each tag needs density, bulk modulus, Poisson "
+                       "ratio, shear viscosity, bulk viscosity)");
+              if (!(it->second >= low && it->second <= high))
+                fail(entry,
+                     ": tag " + std::to_string(tag) + " " + name + " = " +
+                       format_number(it->second) + ": must be " + range);
+              const double value = it->second;
+              values.erase(it);
+              return value;
+            };
+            const double inf = std::numeric_limits<double>::max();
+            m.density        = take("density", 1e-300, inf, "> 0");
+            m.bulk_modulus   = take("bulk modulus", 1e-300, inf, "> 0");
+            m.poisson_ratio =
+              take("Poisson ratio", -0.999, 0.499, "in (-1, 0.5)");
+            m.shear_viscosity = take("shear viscosity", 0, inf, ">= 0");
+            m.bulk_viscosity  = take("bulk viscosity", 0, inf, ">= 0");
+            if (!values.empty())
+              fail(entry,
+                   ": tag " + std::to_string(tag) +
+                     " has an unknown property '" + values.begin()->first +
+                     "'");
+            if (!materials.emplace(tag, m).second)
+              fail(entry, ": tag " + std::to_string(tag) + " is given twice");
+          }
+        return materials;
+      }
+
+
+      /** Unit normal of a face pointing out of its cell, and its measure. */
+      template <int dim, class CellIterator>
+      std::pair<Tensor<1, dim>, double>
+      outward_normal(const CellIterator &cell, const unsigned int f)
+      {
+        const auto     face = cell->face(f);
+        Tensor<1, dim> n;
+        if constexpr (dim == 2)
+          {
+            const Tensor<1, 2> t = face->vertex(1) - face->vertex(0);
+            n[0]                 = t[1];
+            n[1]                 = -t[0];
+          }
+        else
+          n = cross_product_3d(face->vertex(1) - face->vertex(0),
+                               face->vertex(2) - face->vertex(0));
+        if (n * (face->center() - cell->center()) < 0)
+          n = -n;
+        const double measure = n.norm();
+        return {n / measure, measure};
+      }
+    } // namespace
+
+
+    template <int dim>
+    void
+    MeshFile<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection(section);
+      {
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
+                          "The gmsh mesh (.msh, format 2 or 4, ASCII; "
+                          "quadrilaterals in 2D, hexahedra in 3D) of Scene = "
+                          "mesh-file, relative to the working directory");
+        prm.declare_entry(
+          "Boundary roles",
+          "",
+          Patterns::Anything(),
+          "The role of each physical boundary tag of the mesh, as 'tag: "
+          "role, tag: role'. Roles: contact (rate-and-state friction on a "
+          "rigid base, zero normal velocity; one plane), load (prescribed "
+          "velocity Load velocity), free (traction free), free-slip (zero "
+          "normal velocity; in 2D parallel to the contact, in 3D "
+          "perpendicular to it with one normal for all). Every boundary tag "
+          "of the mesh needs a role; faces without a physical tag have tag 0");
+        prm.declare_entry(
+          "Materials",
+          "",
+          Patterns::Anything(),
+          "The material of each physical volume tag of the mesh, as 'tag: "
+          "density 900, bulk modulus 5e4, Poisson ratio 0.3, shear "
+          "viscosity 1e3, bulk viscosity 1e3; tag: ...' (kg/m^3, Pa, -, "
+          "Pa s, Pa s). Every volume tag of the mesh needs one");
+        prm.declare_entry("Gravity",
+                          "0, -9.81",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "Gravitational acceleration in the mesh's "
+                          "coordinates (2 or 3 components as the mesh) "
+                          "[m/s^2]; it loads the contact (normal stress) and "
+                          "defines 'up' for the observation points and the "
+                          "dip direction");
+        prm.declare_entry("Load velocity",
+                          "-50e-6, 0",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "Velocity of the load boundaries in the mesh's "
+                          "coordinates (2 or 3 components as the mesh) [m/s], "
+                          "parallel to the contact; its magnitude is the "
+                          "plate rate v0 (event threshold, output)");
+        prm.declare_entry("Ramp time",
+                          "100",
+                          Patterns::Double(0),
+                          "t0 [s]: the load velocity rises as "
+                          "(1 - cos(pi t/t0))/2 times Load velocity until t0");
+        prm.declare_entry("Observation points",
+                          "",
+                          Patterns::Anything(),
+                          "Points of the body whose displacement along 'up' "
+                          "(minus Gravity) is recorded every step, as 'name: "
+                          "x, y; name: x, y' (3D: x, y, z) in the mesh's "
+                          "coordinates [m]; empty: none");
+        prm.enter_subsection("Friction");
+        FrictionField<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+    template <int dim>
+    MeshFile<dim>::MeshFile(ParameterHandler &prm)
+      : coarse(Triangulation<dim>::limit_level_difference_at_vertices)
+    {
+      prm.enter_subsection("Mesh");
+      const unsigned int n_refinements = prm.get_integer("Global refinements") +
+                                         prm.get_integer("Local refinements");
+      prm.leave_subsection();
+
+      prm.enter_subsection(section);
+      const std::string file  = prm.get("File");
+      const auto        roles = parse_roles(prm.get("Boundary roles"));
+      materials               = parse_materials(prm.get("Materials"));
+      g = parse_vector<dim>(prm.get("Gravity"), "Gravity");
+      load_velocity =
+        parse_vector<dim>(prm.get("Load velocity"), "Load velocity");
+      ramp_time                          = prm.get_double("Ramp time");
+      const std::string observation_text = prm.get("Observation points");
+      prm.enter_subsection("Friction");
+      friction_field = std::make_unique<FrictionField<dim>>(
+        FrictionField<dim>::parse(prm, section + "/Friction"));
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      if (load_velocity.norm() == 0)
+        fail("Load velocity",
+             ": must not be zero (its magnitude is the plate rate v0)");
+
+      read_mesh(file, prm);
+      assign_roles(roles);
+      sample_patch(n_refinements);
+
+      // observation points: inside the mesh
+      for (const auto &item :
+           Utilities::split_string_list(observation_text, ';'))
+        {
+          const auto colon = item.find(':');
+          if (colon == std::string::npos)
+            fail("Observation points",
+                 ": '" + item + "' is not 'name: coordinates'");
+          const std::string name = Utilities::trim(item.substr(0, colon));
+          const Point<dim>  x(
+            parse_vector<dim>(item.substr(colon + 1), "Observation points"));
+          const Point<dim> p = from_physical(x);
+          bool             inside;
+          try
+            {
+              const auto cell =
+                GridTools::find_active_cell_around_point(coarse, p);
+              inside = cell.state() == IteratorState::valid;
+            }
+          catch (const std::exception &)
+            {
+              inside = false;
+            }
+          if (!inside)
+            fail("Observation points",
+                 ": " + name + " " + format_point(&x[0], dim) +
+                   " lies outside the mesh");
+          observation.emplace_back(name, p);
+        }
+    }
+
+
+    /**
+     * Read the mesh, check its cells and tags, find the contact's plane and
+     * rotate the mesh into the solver's frame.
+     */
+    template <int dim>
+    void
+    MeshFile<dim>::read_mesh(const std::string &file, ParameterHandler &)
+    {
+      std::ifstream in(file);
+      if (file.empty() || !in)
+        fail("File", " = " + file + ": cannot be read");
+      Triangulation<dim> mesh;
+      try
+        {
+          GridIn<dim> grid_in;
+          grid_in.attach_triangulation(mesh);
+          grid_in.read_msh(in);
+        }
+      catch (const std::exception &e)
+        {
+          // deal.II's messages span lines: keep the one that says why
+          std::string       why;
+          std::stringstream lines(e.what());
+          for (std::string line; std::getline(lines, line);)
+            if (line.find("Additional information") != std::string::npos &&
+                std::getline(lines, line))
+              {
+                why = ": " + Utilities::trim(line);
+                break;
+              }
+          fail("File",
+               " = " + file + ": not a readable " + std::to_string(dim) +
+                 "D gmsh mesh" + why);
+        }
+      if (!mesh.all_reference_cells_are_hyper_cube())
+        fail(
+          "File",
+          " = " + file + ": has " + (dim == 2 ? "triangles" : "non-hexahedra") +
+            "; only " + (dim == 2 ? "quadrilaterals" : "hexahedra") +
+            " are supported (gmsh: Recombine, or Mesh.SubdivisionAlgorithm)");
+
+      coarse.copy_triangulation(mesh);
+    }
+
+
+    /**
+     * Check the tags against the roles, find the contact's plane, rotate the
+     * mesh into the solver's frame and set rsfcycle's boundary ids.
+     */
+    template <int dim>
+    void
+    MeshFile<dim>::assign_roles(
+      const std::map<types::boundary_id, std::string> &roles)
+    {
+      // every tag has a role and every role's tag is in the mesh
+      std::set<types::boundary_id> boundary_tags;
+      std::set<types::material_id> volume_tags;
+      for (const auto &cell : coarse.active_cell_iterators())
+        {
+          volume_tags.insert(cell->material_id());
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              boundary_tags.insert(face->boundary_id());
+        }
+      for (const auto tag : boundary_tags)
+        if (roles.count(tag) == 0)
+          fail("Boundary roles",
+               ": the mesh's boundary tag " + std::to_string(tag) +
+                 " has no role" +
+                 (tag == 0 ? " (tag 0: faces without a physical tag)" : ""));
+      for (const auto &[tag, role] : roles)
+        if (boundary_tags.count(tag) == 0)
+          fail("Boundary roles",
+               ": tag " + std::to_string(tag) + " (" + role +
+                 ") is not a boundary tag of the mesh");
+      for (const auto tag : volume_tags)
+        if (materials.count(tag) == 0)
+          fail("Materials",
+               ": the mesh's volume tag " + std::to_string(tag) +
+                 " has no material");
+      for (const auto &[tag, m] : materials)
+        if (volume_tags.count(tag) == 0)
+          fail("Materials",
+               ": tag " + std::to_string(tag) +
+                 " is not a volume tag of the mesh");
+      const auto role_of = [&roles](const types::boundary_id tag) {
+        return roles.at(tag);
+      };
+      if (std::none_of(roles.begin(), roles.end(), [](const auto &r) {
+            return r.second == "contact";
+          }))
+        fail("Boundary roles", ": no tag has the role contact");
+
+      // the contact's plane: area-weighted mean of the outward normals,
+      // every contact vertex on it
+      Tensor<1, dim>          normal;
+      std::vector<Point<dim>> contact_vertices;
+      const double            diameter = GridTools::diameter(coarse);
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              role_of(cell->face(f)->boundary_id()) == "contact")
+            {
+              const auto [n, measure] = outward_normal<dim>(cell, f);
+              normal += measure * n;
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                contact_vertices.push_back(cell->face(f)->vertex(v));
+            }
+      if (normal.norm() == 0)
+        fail("Boundary roles", ": the contact faces have no common plane");
+      normal /= normal.norm();
+      const Point<dim> x0 = contact_vertices.front();
+      for (const auto &x : contact_vertices)
+        if (std::abs((x - x0) * normal) > 1e-6 * diameter)
+          fail("Boundary roles",
+               ": the contact is not planar (vertex " +
+                 format_point(&x[0], dim) + " lies " +
+                 format_number(std::abs((x - x0) * normal)) +
+                 " m off its plane); curved faults are not supported "
+                 "(doc/mesh-file.md)");
+
+      // the rotated frame: y into the body, x down dip where gravity
+      // defines a dip, in 3D z along the free-slip normal or the strike
+      up = (g.norm() > 0) ? Tensor<1, dim>(-g / g.norm()) : Tensor<1, dim>();
+      if (g.norm() == 0)
+        up[dim - 1] = 1;
+      const Tensor<1, dim> e_y      = -normal;
+      Tensor<1, dim>       down_dip = -(up - (up * e_y) * e_y);
+      const bool           has_dip  = down_dip.norm() > 1e-12;
+      Tensor<1, dim>       e_x, e_z;
+      if constexpr (dim == 2)
+        {
+          e_x[0]     = e_y[1];
+          e_x[1]     = -e_y[0];
+          along_sign = (has_dip && down_dip * e_x < 0) ? -1 : 1;
+        }
+      else
+        {
+          Tensor<1, dim> free_slip;
+          for (const auto &cell : coarse.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  role_of(cell->face(f)->boundary_id()) == "free-slip")
+                free_slip = outward_normal<dim>(cell, f).first;
+          Tensor<1, dim> strike = cross_product_3d(up, e_y);
+          if (free_slip.norm() > 0)
+            e_z = free_slip - (free_slip * e_y) * e_y;
+          else if (strike.norm() > 1e-12)
+            e_z = strike;
+          else
+            {
+              Tensor<1, dim> any;
+              any[std::abs(e_y[0]) < 0.9 ? 0 : 2] = 1;
+              e_z                                 = cross_product_3d(any, e_y);
+            }
+          if (e_z.norm() < 1e-12)
+            fail("Boundary roles",
+                 ": the free-slip boundaries must be perpendicular to the "
+                 "contact in 3D");
+          e_z /= e_z.norm();
+          e_x = cross_product_3d(e_y, e_z);
+          if (has_dip && down_dip * e_x < 0)
+            {
+              e_x = -e_x;
+              e_z = -e_z;
+            }
+        }
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          rotation[0][d] = e_x[d];
+          rotation[1][d] = e_y[d];
+          if (dim == 3)
+            rotation[dim - 1][d] = e_z[d];
+        }
+      origin = x0;
+      GridTools::transform(
+        [this](const Point<dim> &x) { return from_physical(x); }, coarse);
+
+      // rsfcycle's ids; the contact exactly in y = 0; free-slip faces
+      // normal to the rotated frame's last axis
+      const std::map<std::string, types::boundary_id> id_of = {
+        {"contact", boundary_id::contact},
+        {"load", boundary_id::backstop},
+        {"free", boundary_id::surface},
+        {"free-slip", boundary_id::lateral}};
+      along_offset = std::numeric_limits<double>::max();
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto face = cell->face(f);
+            if (!face->at_boundary())
+              continue;
+            const std::string role = role_of(face->boundary_id());
+            if (role == "free-slip")
+              {
+                const Tensor<1, dim> n = outward_normal<dim>(cell, f).first;
+                if (std::abs(n[dim - 1]) < 1 - 1e-6)
+                  fail("Boundary roles",
+                       ": a free-slip face (tag " +
+                         std::to_string(face->boundary_id()) + ") is not " +
+                         (dim == 2 ? "parallel to the contact" :
+                                     "perpendicular to the contact with the "
+                                     "normal of the other free-slip faces") +
+                         " (free slip fixes one Cartesian component)");
+              }
+            if (role == "contact")
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  face->vertex(v)[1] = 0;
+                  along_offset =
+                    std::min(along_offset, along_sign * face->vertex(v)[0]);
+                }
+            face->set_boundary_id(id_of.at(role));
+          }
+
+      load_rotated = rotation * load_velocity;
+      if (std::abs(load_rotated[1]) > 1e-6 * load_rotated.norm())
+        fail("Load velocity",
+             " = " + format_point(&load_velocity[0], dim) +
+               ": has a component normal to the contact; give a velocity "
+               "parallel to it");
+      load_rotated[1] = 0; // (rounding of the given digits)
+    }
+
+
+    /**
+     * The rate-weakening part of the contact as boxes. Each coarse contact
+     * face is cut into n strips (3D; 2D: one) with n twice the number of
+     * cells the refinements can put along an edge (capped); along each
+     * strip's centre line b - a is sampled at n + 1 points and the ends of
+     * every rate-weakening run are found by bisection, so that in 2D the
+     * patch is exact (to rounding) wherever b - a changes sign once between
+     * samples. The friction functions are checked on a coarser grid of the
+     * same faces.
+     */
+    template <int dim>
+    void
+    MeshFile<dim>::sample_patch(const unsigned int n_refinements)
+    {
+      std::vector<typename Triangulation<dim>::face_iterator> faces;
+      for (const auto &cell : coarse.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() &&
+              face->boundary_id() == boundary_id::contact)
+            faces.push_back(face);
+      const double max_samples = 2e6;
+      unsigned int n           = 1u << std::min(n_refinements + 1, 14u);
+      while (n > 8 && faces.size() * std::pow(n + 1., dim - 1) > max_samples)
+        n /= 2;
+      const unsigned int n_strips = (dim == 3) ? n : 1;
+      const unsigned int n_check  = std::min(n, 8u);
+
+      patch_boxes.clear();
+      for (const auto &face : faces)
+        {
+          // face parameter (s, t) -> rotated frame (bilinear in 3D)
+          const auto at = [&face](const double s, const double t) {
+            if constexpr (dim == 2)
+              return Point<dim>((1 - s) * face->vertex(0) +
+                                s * face->vertex(1));
+            else
+              return Point<dim>((1 - s) * (1 - t) * face->vertex(0) +
+                                s * (1 - t) * face->vertex(1) +
+                                (1 - s) * t * face->vertex(2) +
+                                s * t * face->vertex(3));
+          };
+          const auto weakening = [&](const double s, const double t) {
+            return friction_field->b_minus_a(to_physical(at(s, t))) > 0;
+          };
+          for (unsigned int i = 0; i <= n_check; ++i)
+            for (unsigned int j = 0; j <= (dim == 3 ? n_check : 0); ++j)
+              friction_field->check(to_physical(at(double(i) / n_check,
+                                                   double(j) / n_check)),
+                                    section + "/Friction");
+          for (unsigned int j = 0; j < n_strips; ++j)
+            {
+              const double t_lo = double(j) / n_strips,
+                           t_hi = double(j + 1) / n_strips,
+                           t    = 0.5 * (t_lo + t_hi);
+              // the point where weakening changes between s0 and s1
+              const auto boundary = [&](double s0, double s1) {
+                const bool w0 = weakening(s0, t);
+                for (unsigned int k = 0; k < 60; ++k)
+                  {
+                    const double m                    = 0.5 * (s0 + s1);
+                    (weakening(m, t) == w0 ? s0 : s1) = m;
+                  }
+                return 0.5 * (s0 + s1);
+              };
+              const auto add = [&](const double s0, const double s1) {
+                patch_boxes.emplace_back(std::vector<Point<dim>>{
+                  at(s0, t_lo), at(s1, t_lo), at(s0, t_hi), at(s1, t_hi)});
+              };
+              double start = 0, s_prior = 0;
+              bool   weak = false;
+              for (unsigned int i = 0; i <= n; ++i)
+                {
+                  const double s = double(i) / n;
+                  const bool   w = weakening(s, t);
+                  if (w && !weak)
+                    start = (i == 0) ? 0. : boundary(s_prior, s);
+                  if (!w && weak)
+                    add(start, boundary(s_prior, s));
+                  weak    = w;
+                  s_prior = s;
+                }
+              if (weak)
+                add(start, 1.);
+            }
+        }
+      // flat in y = 0 (the contact's vertices are)
+      for (auto &box : patch_boxes)
+        {
+          box.get_boundary_points().first[1]  = 0;
+          box.get_boundary_points().second[1] = 0;
+        }
+      patch_tree = pack_rtree(patch_boxes);
+    }
+
+
+    template <int dim>
+    void
+    MeshFile<dim>::create_coarse_mesh(Triangulation<dim> &tria) const
+    {
+      const auto [vertices, cells, faces] =
+        GridTools::get_coarse_mesh_description(coarse);
+      tria.create_triangulation(vertices, cells, faces);
+    }
+
+
+    /**
+     * The patch is the set of rate-weakening sample points; the distance
+     * splits, as for the wedge, into the height of the box above the
+     * contact and the in-plane gap to the nearest point, reduced by the
+     * margin.
+     */
+    template <int dim>
+    double
+    MeshFile<dim>::distance_to_patch(const BoundingBox<dim> &box,
+                                     const double            margin) const
+    {
+      if (patch_boxes.empty())
+        return std::numeric_limits<double>::max();
+      std::vector<BoundingBox<dim>> nearest;
+      patch_tree.query(boost::geometry::index::nearest(box, 1),
+                       std::back_inserter(nearest));
+      const auto &[q_lo, q_hi] = nearest.front().get_boundary_points();
+      const auto &[lo, hi]     = box.get_boundary_points();
+      const double gx = std::max({0., lo[0] - q_hi[0], q_lo[0] - hi[0]});
+      const double gz =
+        (dim == 3) ?
+          std::max(
+            {0., lo[dim - 1] - q_hi[dim - 1], q_lo[dim - 1] - hi[dim - 1]}) :
+          0.;
+      return std::hypot(std::max(0., std::hypot(gx, gz) - margin),
+                        std::max(0., lo[1]));
+    }
+
+
+    template <int dim>
+    types::material_id
+    MeshFile<dim>::material_id(const Point<dim> &,
+                               const types::material_id mesh_id) const
+    {
+      return mesh_id;
+    }
+
+
+    template <int dim>
+    Material
+    MeshFile<dim>::material(const types::material_id id) const
+    {
+      return materials.at(id);
+    }
+
+
+    template <int dim>
+    Tensor<1, dim>
+    MeshFile<dim>::gravity() const
+    {
+      return rotation * g;
+    }
+
+
+    template <int dim>
+    Tensor<1, dim>
+    MeshFile<dim>::vertical() const
+    {
+      return rotation * up;
+    }
+
+
+    template <int dim>
+    Tensor<1, dim>
+    MeshFile<dim>::backstop_velocity(const double t) const
+    {
+      const double ramp =
+        (t < ramp_time) ? 0.5 * (1. - std::cos(M_PI * t / ramp_time)) : 1.;
+      return ramp * load_rotated;
+    }
+
+
+    template <int dim>
+    friction::Parameters
+    MeshFile<dim>::friction_parameters(const Point<dim> &p) const
+    {
+      return friction_field->parameters(to_physical(p));
+    }
+
+
+    template <int dim>
+    double
+    MeshFile<dim>::initial_state(const Point<dim> &p) const
+    {
+      return friction_field->initial_alpha(to_physical(p));
+    }
+
+
+    template <int dim>
+    double
+    MeshFile<dim>::convergence_rate() const
+    {
+      return load_rotated.norm();
+    }
+
+
+    template <int dim>
+    std::vector<std::pair<std::string, Point<dim>>>
+    MeshFile<dim>::observation_points() const
+    {
+      return observation;
+    }
+
+
+    template <int dim>
+    double
+    MeshFile<dim>::along_base_coordinate(const Point<dim> &p) const
+    {
+      return along_sign * p[0] - along_offset;
+    }
+
+
+    template <int dim>
+    Point<dim>
+    MeshFile<dim>::to_physical(const Point<dim> &p) const
+    {
+      return origin + transpose(rotation) * p;
+    }
+
+
+    template <int dim>
+    Point<dim>
+    MeshFile<dim>::from_physical(const Point<dim> &x) const
+    {
+      return Point<dim>(rotation * (x - origin));
+    }
+
+
+    template class MeshFile<2>;
+    template class MeshFile<3>;
+  } // namespace scenes
+} // namespace rsfcycle

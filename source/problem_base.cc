@@ -286,7 +286,8 @@ namespace rsfcycle
       parameters.run.output_directory,
       discretisation,
       contact,
-      scene.convergence_rate());
+      scene.convergence_rate(),
+      scene.output_frame());
   }
 
 

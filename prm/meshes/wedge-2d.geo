@@ -13,15 +13,15 @@
 length = 1.0;
 depth = 0.27;
 lower = 0.06;            // Lower region thickness
-h = 0.12;                // coarse triangle size (before subdivision)
+h = 0.3;                 // coarse triangle size (before subdivision)
 
-Point(1) = {0, 0, 0};                              // A
-Point(2) = {length / 2, -depth / 2, 0};            // M, midpoint of A-B
+Point(1) = {0, 0, 0, h};                              // A
+Point(2) = {length / 2, -depth / 2, 0, h};            // M, midpoint of A-B
 yl = -(depth - lower);
-Point(3) = {length * (-yl) / depth, yl, 0};        // P: base at the lower line
-Point(4) = {length, -depth, 0};                    // B
-Point(5) = {length, yl, 0};                        // Q: backstop at the lower line
-Point(6) = {length, 0, 0};                         // C
+Point(3) = {length * (-yl) / depth, yl, 0, h};        // P: base at the lower line
+Point(4) = {length, -depth, 0, h};                    // B
+Point(5) = {length, yl, 0, h};                        // Q: backstop at the lower line
+Point(6) = {length, 0, 0, h};                         // C
 
 Line(1) = {1, 2};   // base A-M
 Line(2) = {2, 3};   // base M-P
@@ -36,8 +36,8 @@ Plane Surface(1) = {1};
 Curve Loop(2) = {3, 4, -7};
 Plane Surface(2) = {2};
 
-// 4 triangle edges on A-M become 8 quad edges of length |AM|/8 = 0.0647 m
-Transfinite Curve{1} = 5;
+// 2 triangle edges on A-M become 4 quad edges of length |AM|/4 = 0.129 m
+Transfinite Curve{1} = 3;
 Mesh.CharacteristicLengthMax = h;
 Mesh.Algorithm = 6;            // Frontal-Delaunay triangles ...
 Mesh.SubdivisionAlgorithm = 1; // ... each split into three quadrilaterals

@@ -68,6 +68,57 @@ namespace rsfcycle
         const types::boundary_id id;
       };
 
+      /**
+       * A DataOut or DataOutFaces whose built patches are mapped into an
+       * output frame: points x -> c + Q x, the first `n_vectors` blocks of
+       * dim data rows (vector fields) v -> Q v.
+       */
+      template <class Writer, int dim>
+      class InFrame : public Writer
+      {
+      public:
+        using Writer::Writer;
+
+        void
+        to_frame(const std::pair<Tensor<2, dim>, Point<dim>> &frame,
+                 const unsigned int                           n_vectors)
+        {
+          const auto &[Q, c] = frame;
+          for (auto &patch : this->patches)
+            {
+              for (auto &x : patch.vertices)
+                x = c + Q * x;
+              std::vector<unsigned int> first_rows;
+              for (unsigned int b = 0; b < n_vectors; ++b)
+                first_rows.push_back(b * dim);
+              const unsigned int n_rows = patch.data.n_rows();
+              for (const unsigned int r : first_rows)
+                rotate(patch.data, r, Q, Point<dim>());
+              if (patch.points_are_available)
+                rotate(patch.data, n_rows - dim, Q, c);
+            }
+        }
+
+      private:
+        /** Rows r .. r + dim - 1 of every column: x -> shift + Q x. */
+        static void
+        rotate(Table<2, float>      &data,
+               const unsigned int    r,
+               const Tensor<2, dim> &Q,
+               const Point<dim>     &shift)
+        {
+          for (unsigned int j = 0; j < data.n_cols(); ++j)
+            {
+              Tensor<1, dim> x;
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = data(r + d, j);
+              x = shift + Q * x;
+              for (unsigned int d = 0; d < dim; ++d)
+                data(r + d, j) = x[d];
+            }
+        }
+      };
+
       /** The base fields in the order of SnapshotWriter::base_fields(). */
       enum Field
       {
@@ -86,14 +137,16 @@ namespace rsfcycle
 
     template <int dim>
     SnapshotWriter<dim>::SnapshotWriter(
-      const std::string                      &dir,
-      const physics::Discretisation<dim>     &discretisation,
-      const friction::ContactQuadrature<dim> &contact,
-      const double                            convergence_rate)
+      const std::string                           &dir,
+      const physics::Discretisation<dim>          &discretisation,
+      const friction::ContactQuadrature<dim>      &contact,
+      const double                                 convergence_rate,
+      const std::pair<Tensor<2, dim>, Point<dim>> &frame)
       : dir(dir)
       , discretisation(discretisation)
       , contact(contact)
       , v0(convergence_rate)
+      , frame(frame)
     {}
 
 
@@ -169,7 +222,7 @@ namespace rsfcycle
       state.v.update_ghost_values();
       const auto &scalar_dofs = discretisation.scalar_dof_handler;
 
-      DataOut<dim> data_out;
+      InFrame<DataOut<dim>, dim> data_out;
       data_out.attach_dof_handler(discretisation.dof_handler);
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
@@ -203,6 +256,7 @@ namespace rsfcycle
         material[cell->active_cell_index()] = cell->material_id();
       data_out.add_data_vector(material, "material_id");
       data_out.build_patches();
+      data_out.to_frame(frame, 2); // displacement, velocity
 
       DataOutBase::VtkFlags flags;
       flags.time  = t;
@@ -225,7 +279,7 @@ namespace rsfcycle
 
       // The fault (contact faces) at the same times: fault/fault-NNNNN.vtu,
       // fault.pvd (the paper's figure 9 draws isolines of V - v0 on it).
-      BoundaryFaces<dim> fault(boundary_id::contact);
+      InFrame<BoundaryFaces<dim>, dim> fault(boundary_id::contact);
       fault.attach_dof_handler(scalar_dofs);
       fault.add_data_vector(field[rate_minus_v0], "slip_rate_minus_v0");
       fault.add_data_vector(field[log_slip_rate], "log10_slip_rate_over_v0");
@@ -234,6 +288,7 @@ namespace rsfcycle
       fault.add_data_vector(field[traction], "shear_traction");
       fault.add_data_vector(field[mu], "friction_coefficient");
       fault.build_patches();
+      fault.to_frame(frame, 0);
       fault.set_flags(flags);
       const std::string fault_name =
         write_pieces(fault, "fault/fault-" + number);

@@ -744,6 +744,14 @@ namespace rsfcycle
 
 
     template <int dim>
+    std::pair<Tensor<2, dim>, Point<dim>>
+    MeshFile<dim>::output_frame() const
+    {
+      return {transpose(rotation), origin};
+    }
+
+
+    template <int dim>
     Point<dim>
     MeshFile<dim>::to_physical(const Point<dim> &p) const
     {

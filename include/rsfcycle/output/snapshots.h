@@ -18,16 +18,19 @@ namespace rsfcycle
      * displacement, velocity, material and the friction fields on the base) and
      * of the fault (fault.pvd, fault/fault-N.vtu: the contact faces,
      * DataOutFaces), with their PVD records kept as members (and in
-     * checkpoints).
+     * checkpoints). Points and vector fields are written in the output
+     * frame x = c + Q p of the scene (Scene::output_frame()).
      */
     template <int dim>
     class SnapshotWriter
     {
     public:
-      SnapshotWriter(const std::string                      &dir,
-                     const physics::Discretisation<dim>     &discretisation,
-                     const friction::ContactQuadrature<dim> &contact,
-                     double                                  convergence_rate);
+      SnapshotWriter(
+        const std::string                      &dir,
+        const physics::Discretisation<dim>     &discretisation,
+        const friction::ContactQuadrature<dim> &contact,
+        double                                  convergence_rate,
+        const std::pair<dealii::Tensor<2, dim>, dealii::Point<dim>> &frame);
 
       /** Write the snapshot of the state at time t. */
       void
@@ -68,6 +71,8 @@ namespace rsfcycle
       const physics::Discretisation<dim>     &discretisation;
       const friction::ContactQuadrature<dim> &contact;
       const double                            v0;
+      /** Q and c of the output frame. */
+      const std::pair<dealii::Tensor<2, dim>, dealii::Point<dim>> frame;
 
       std::vector<std::pair<double, std::string>> records, fault_records;
       unsigned int                                n_snapshots = 0;

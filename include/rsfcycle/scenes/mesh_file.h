@@ -71,6 +71,9 @@ namespace rsfcycle
       observation_points() const override;
       double
       along_base_coordinate(const Point<dim> &p) const override;
+      /** The mesh's own coordinates. */
+      std::pair<Tensor<2, dim>, Point<dim>>
+      output_frame() const override;
 
       /** Mesh coordinates of a point of the rotated frame. */
       Point<dim>

@@ -4,6 +4,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 #include <memory>
@@ -111,6 +112,17 @@ namespace rsfcycle
        */
       virtual std::vector<std::pair<std::string, Point<dim>>>
       observation_points() const = 0;
+
+      /**
+       * The frame of the VTU output: a point p of the rotated frame is
+       * written as c + Q p, a vector v as Q v. The identity (the default)
+       * writes the rotated frame.
+       */
+      virtual std::pair<Tensor<2, dim>, Point<dim>>
+      output_frame() const
+      {
+        return {Tensor<2, dim>(unit_symmetric_tensor<dim>()), Point<dim>()};
+      }
 
       /**
        * Coordinate along the base reported in profiles: distance from the

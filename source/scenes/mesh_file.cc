@@ -265,7 +265,7 @@ namespace rsfcycle
         fail("Load velocity",
              ": must not be zero (its magnitude is the plate rate v0)");
 
-      read_mesh(file, prm);
+      read_mesh(file);
       assign_roles(roles);
       sample_patch(n_refinements);
 
@@ -301,13 +301,10 @@ namespace rsfcycle
     }
 
 
-    /**
-     * Read the mesh, check its cells and tags, find the contact's plane and
-     * rotate the mesh into the solver's frame.
-     */
+    /** Read the mesh and check that its cells are quads / hexes. */
     template <int dim>
     void
-    MeshFile<dim>::read_mesh(const std::string &file, ParameterHandler &)
+    MeshFile<dim>::read_mesh(const std::string &file)
     {
       std::ifstream in(file);
       if (file.empty() || !in)

@@ -116,7 +116,7 @@ namespace rsfcycle
       RTree<BoundingBox<dim>>       patch_tree;
 
       void
-      read_mesh(const std::string &file, ParameterHandler &prm);
+      read_mesh(const std::string &file);
       void
       assign_roles(const std::map<types::boundary_id, std::string> &roles);
       void

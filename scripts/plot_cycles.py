@@ -16,7 +16,8 @@ Writes into RUNDIR/figures/ (or DIR):
                         between them); dashed: the rate-weakening part when
                         --dip gives the depth axis.
   cycles-uplift.png     displacement along 'up' at the observation points
-                        over time, and the event times.
+                        since the start (after the gravity equilibrium),
+                        and the event times.
 and prints the event catalogue (events.csv) in the chosen units.
 """
 import argparse
@@ -125,21 +126,24 @@ def main():
     fig, ax = plt.subplots(figsize=(10, 4.5))
     t = np.array([float(r["time_s"]) for r in series]) / t_scale
     for name in names:
-        ax.plot(t, [float(r[name]) for r in series], label=name)
+        u = np.array([float(r[name]) for r in series])
+        ax.plot(t, u - u[0], label=name)
     for e in events:
         ax.axvline(float(e["start_s"]) / t_scale, color="0.8", lw=0.6,
                    zorder=0)
     ax.set_xlabel("time [%s]" % args.unit)
-    ax.set_ylabel("displacement along up [m]")
+    ax.set_ylabel("displacement along up since t = 0 [m]")
     ax.legend()
     ax.set_title("surface displacement at the observation points "
                  "(grey: event starts)")
     fig.savefig(os.path.join(out, "cycles-uplift.png"), dpi=120)
     plt.close(fig)
 
-    print("event  start [%s]  duration [s]  nucleation [%s]  peak V [m/s]  "
+    along = math.sin(math.radians(args.dip)) if args.dip is not None else 1
+    print("event  start [%s]  duration [s]  nucleation %s [%s]  peak V [m/s]  "
           "width [%s]  slip [m]  recurrence [%s]"
-          % (args.unit, args.length_unit, args.length_unit, args.unit))
+          % (args.unit, "depth" if args.dip is not None else "position",
+             args.length_unit, args.length_unit, args.unit))
     for e in events:
         rec = e.get("recurrence_s", "")
         rec = "%.4g" % (float(rec) / t_scale) if rec not in ("", "nan") \
@@ -147,7 +151,7 @@ def main():
         print("%5s  %10.5g  %12.4g  %15.4g  %12.4g  %10.4g  %8.4g  %s" % (
             e["event"], float(e["start_s"]) / t_scale,
             float(e["duration_s"]),
-            float(e["nucleation_position_m"]) / x_scale,
+            float(e["nucleation_position_m"]) * along / x_scale,
             float(e["peak_slip_rate_m_per_s"]),
             float(e["rupture_width_m"]) / x_scale,
             float(e["slip_um"]) * 1e-6, rec))

@@ -88,14 +88,10 @@ namespace rsfcycle
             {
               for (auto &x : patch.vertices)
                 x = c + Q * x;
-              std::vector<unsigned int> first_rows;
               for (unsigned int b = 0; b < n_vectors; ++b)
-                first_rows.push_back(b * dim);
-              const unsigned int n_rows = patch.data.n_rows();
-              for (const unsigned int r : first_rows)
-                rotate(patch.data, r, Q, Point<dim>());
+                rotate(patch.data, b * dim, Q, Point<dim>());
               if (patch.points_are_available)
-                rotate(patch.data, n_rows - dim, Q, c);
+                rotate(patch.data, patch.data.n_rows() - dim, Q, c);
             }
         }
 

@@ -8,6 +8,7 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/scenes/mesh_file.h>
+#include <rsfcycle/scenes/mesh_file_input.h>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -18,134 +19,7 @@ namespace rsfcycle
   {
     namespace
     {
-      const std::string section = "Mesh file";
-
-      [[noreturn]] void
-      fail(const std::string &entry, const std::string &message)
-      {
-        throw std::invalid_argument(section + "/" + entry + message);
-      }
-
-
-      std::string
-      format_point(const double *x, const unsigned int n)
-      {
-        std::string s = "(";
-        for (unsigned int d = 0; d < n; ++d)
-          s += (d ? ", " : "") + format_number(x[d]);
-        return s + ")";
-      }
-
-
-      template <int dim>
-      Tensor<1, dim>
-      parse_vector(const std::string &text, const std::string &entry)
-      {
-        const auto parts = Utilities::split_string_list(text, ',');
-        if (parts.size() != dim)
-          fail(entry,
-               " = " + text + ": needs " + std::to_string(dim) +
-                 " components (x, y" + (dim == 3 ? ", z" : "") + ")");
-        Tensor<1, dim> v;
-        for (unsigned int d = 0; d < dim; ++d)
-          v[d] = Utilities::string_to_double(parts[d]);
-        return v;
-      }
-
-
-      /** "1: contact, 2: load": tag -> role, each tag with one role. */
-      std::map<types::boundary_id, std::string>
-      parse_roles(const std::string &text)
-      {
-        const std::set<std::string>               allowed = {"contact",
-                                                             "load",
-                                                             "free",
-                                                             "free-slip"};
-        std::map<types::boundary_id, std::string> roles;
-        for (const auto &item : Utilities::split_string_list(text, ','))
-          {
-            const auto pair = Utilities::split_string_list(item, ':');
-            if (pair.size() != 2 || allowed.count(pair[1]) == 0)
-              fail("Boundary roles",
-                   ": '" + item +
-                     "' is not 'tag: role' with role contact, load, free or "
-                     "free-slip");
-            const auto tag = static_cast<types::boundary_id>(
-              Utilities::string_to_int(pair[0]));
-            const auto [it, inserted] = roles.emplace(tag, pair[1]);
-            if (!inserted && it->second != pair[1])
-              fail("Boundary roles",
-                   ": tag " + pair[0] + " has two roles (" + it->second + ", " +
-                     pair[1] + ")");
-          }
-        return roles;
-      }
-
-
-      /**
-       * "10: density 900, bulk modulus 5e4, Poisson ratio 0.3, shear
-       * viscosity 1e3, bulk viscosity 1e3; 11: ...".
-       */
-      std::map<types::material_id, Material>
-      parse_materials(const std::string &text)
-      {
-        const std::string                      entry = "Materials";
-        std::map<types::material_id, Material> materials;
-        for (const auto &region : Utilities::split_string_list(text, ';'))
-          {
-            const auto colon = region.find(':');
-            if (colon == std::string::npos)
-              fail(entry, ": '" + region + "' is not 'tag: properties'");
-            const auto tag =
-              static_cast<types::material_id>(Utilities::string_to_int(
-                Utilities::trim(region.substr(0, colon))));
-            std::map<std::string, double> values;
-            for (const auto &item :
-                 Utilities::split_string_list(region.substr(colon + 1), ','))
-              {
-                const auto space = item.find_last_of(' ');
-                if (space == std::string::npos)
-                  fail(entry, ": '" + item + "' is not 'name value'");
-                values[Utilities::trim(item.substr(0, space))] =
-                  Utilities::string_to_double(item.substr(space + 1));
-              }
-            Material   m;
-            const auto take = [&](const std::string &name,
-                                  const double       low,
-                                  const double       high,
-                                  const std::string &range) {
-              const auto it = values.find(name);
-              if (it == values.end())
-                fail(entry,
-                     ": tag " + std::to_string(tag) + " has no '" + name +
-                       "' (each tag needs density, bulk modulus, Poisson "
-                       "ratio, shear viscosity, bulk viscosity)");
-              if (!(it->second >= low && it->second <= high))
-                fail(entry,
-                     ": tag " + std::to_string(tag) + " " + name + " = " +
-                       format_number(it->second) + ": must be " + range);
-              const double value = it->second;
-              values.erase(it);
-              return value;
-            };
-            const double inf = std::numeric_limits<double>::max();
-            m.density        = take("density", 1e-300, inf, "> 0");
-            m.bulk_modulus   = take("bulk modulus", 1e-300, inf, "> 0");
-            m.poisson_ratio =
-              take("Poisson ratio", -0.999, 0.499, "in (-1, 0.5)");
-            m.shear_viscosity = take("shear viscosity", 0, inf, ">= 0");
-            m.bulk_viscosity  = take("bulk viscosity", 0, inf, ">= 0");
-            if (!values.empty())
-              fail(entry,
-                   ": tag " + std::to_string(tag) +
-                     " has an unknown property '" + values.begin()->first +
-                     "'");
-            if (!materials.emplace(tag, m).second)
-              fail(entry, ": tag " + std::to_string(tag) + " is given twice");
-          }
-        return materials;
-      }
-
+      using namespace mesh_file_input;
 
       /** Unit normal of a face pointing out of its cell, and its measure. */
       template <int dim, class CellIterator>
@@ -524,97 +398,30 @@ namespace rsfcycle
 
 
     /**
-     * The rate-weakening part of the contact as boxes. Each coarse contact
-     * face is cut into n strips (3D; 2D: one) with n twice the number of
-     * cells the refinements can put along an edge (capped); along each
-     * strip's centre line b - a is sampled at n + 1 points and the ends of
-     * every rate-weakening run are found by bisection, so that in 2D the
-     * patch is exact (to rounding) wherever b - a changes sign once between
-     * samples. The friction functions are checked on a coarser grid of the
-     * same faces.
+     * The friction functions checked on a grid of every coarse contact
+     * face, and the rate-weakening part of the contact (b - a > 0) as the
+     * patch of the refinement laws.
      */
     template <int dim>
     void
     MeshFile<dim>::sample_patch(const unsigned int n_refinements)
     {
-      std::vector<typename Triangulation<dim>::face_iterator> faces;
+      const unsigned int n = 8;
       for (const auto &cell : coarse.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() &&
               face->boundary_id() == boundary_id::contact)
-            faces.push_back(face);
-      const double max_samples = 2e6;
-      unsigned int n           = 1u << std::min(n_refinements + 1, 14u);
-      while (n > 8 && faces.size() * std::pow(n + 1., dim - 1) > max_samples)
-        n /= 2;
-      const unsigned int n_strips = (dim == 3) ? n : 1;
-      const unsigned int n_check  = std::min(n, 8u);
-
-      patch_boxes.clear();
-      for (const auto &face : faces)
-        {
-          // face parameter (s, t) -> rotated frame (bilinear in 3D)
-          const auto at = [&face](const double s, const double t) {
-            if constexpr (dim == 2)
-              return Point<dim>((1 - s) * face->vertex(0) +
-                                s * face->vertex(1));
-            else
-              return Point<dim>((1 - s) * (1 - t) * face->vertex(0) +
-                                s * (1 - t) * face->vertex(1) +
-                                (1 - s) * t * face->vertex(2) +
-                                s * t * face->vertex(3));
-          };
-          const auto weakening = [&](const double s, const double t) {
-            return friction_field->b_minus_a(to_physical(at(s, t))) > 0;
-          };
-          for (unsigned int i = 0; i <= n_check; ++i)
-            for (unsigned int j = 0; j <= (dim == 3 ? n_check : 0); ++j)
-              friction_field->check(to_physical(at(double(i) / n_check,
-                                                   double(j) / n_check)),
-                                    section + "/Friction");
-          for (unsigned int j = 0; j < n_strips; ++j)
-            {
-              const double t_lo = double(j) / n_strips,
-                           t_hi = double(j + 1) / n_strips,
-                           t    = 0.5 * (t_lo + t_hi);
-              // the point where weakening changes between s0 and s1
-              const auto boundary = [&](double s0, double s1) {
-                const bool w0 = weakening(s0, t);
-                for (unsigned int k = 0; k < 60; ++k)
-                  {
-                    const double m                    = 0.5 * (s0 + s1);
-                    (weakening(m, t) == w0 ? s0 : s1) = m;
-                  }
-                return 0.5 * (s0 + s1);
-              };
-              const auto add = [&](const double s0, const double s1) {
-                patch_boxes.emplace_back(std::vector<Point<dim>>{
-                  at(s0, t_lo), at(s1, t_lo), at(s0, t_hi), at(s1, t_hi)});
-              };
-              double start = 0, s_prior = 0;
-              bool   weak = false;
-              for (unsigned int i = 0; i <= n; ++i)
-                {
-                  const double s = double(i) / n;
-                  const bool   w = weakening(s, t);
-                  if (w && !weak)
-                    start = (i == 0) ? 0. : boundary(s_prior, s);
-                  if (!w && weak)
-                    add(start, boundary(s_prior, s));
-                  weak    = w;
-                  s_prior = s;
-                }
-              if (weak)
-                add(start, 1.);
-            }
-        }
-      // flat in y = 0 (the contact's vertices are)
-      for (auto &box : patch_boxes)
-        {
-          box.get_boundary_points().first[1]  = 0;
-          box.get_boundary_points().second[1] = 0;
-        }
-      patch_tree = pack_rtree(patch_boxes);
+            for (unsigned int i = 0; i <= n; ++i)
+              for (unsigned int j = 0; j <= (dim == 3 ? n : 0); ++j)
+                friction_field->check(to_physical(face_point<dim>(
+                                        face, double(i) / n, double(j) / n)),
+                                      section + "/Friction");
+      patch.build(
+        coarse,
+        [this](const Point<dim> &p) {
+          return friction_field->b_minus_a(to_physical(p)) > 0;
+        },
+        n_refinements);
     }
 
 
@@ -628,32 +435,12 @@ namespace rsfcycle
     }
 
 
-    /**
-     * The patch is the set of rate-weakening sample points; the distance
-     * splits, as for the wedge, into the height of the box above the
-     * contact and the in-plane gap to the nearest point, reduced by the
-     * margin.
-     */
     template <int dim>
     double
     MeshFile<dim>::distance_to_patch(const BoundingBox<dim> &box,
                                      const double            margin) const
     {
-      if (patch_boxes.empty())
-        return std::numeric_limits<double>::max();
-      std::vector<BoundingBox<dim>> nearest;
-      patch_tree.query(boost::geometry::index::nearest(box, 1),
-                       std::back_inserter(nearest));
-      const auto &[q_lo, q_hi] = nearest.front().get_boundary_points();
-      const auto &[lo, hi]     = box.get_boundary_points();
-      const double gx = std::max({0., lo[0] - q_hi[0], q_lo[0] - hi[0]});
-      const double gz =
-        (dim == 3) ?
-          std::max(
-            {0., lo[dim - 1] - q_hi[dim - 1], q_lo[dim - 1] - hi[dim - 1]}) :
-          0.;
-      return std::hypot(std::max(0., std::hypot(gx, gz) - margin),
-                        std::max(0., lo[1]));
+      return patch.distance(box, margin);
     }
 
 

@@ -3,9 +3,9 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
-#include <deal.II/numerics/rtree.h>
 #include <map>
 #include <memory>
+#include <rsfcycle/scenes/contact_patch.h>
 #include <rsfcycle/scenes/friction_field.h>
 #include <rsfcycle/scenes/scene.h>
 #include <string>
@@ -83,13 +83,6 @@ namespace rsfcycle
       Point<dim>
       from_physical(const Point<dim> &x) const;
 
-      /** The boxes (rotated frame) whose union is the patch. */
-      const std::vector<BoundingBox<dim>> &
-      patch() const
-      {
-        return patch_boxes;
-      }
-
     private:
       /** Rotation R (rows: the rotated axes in mesh coordinates) and origin. */
       Tensor<2, dim> rotation;
@@ -108,12 +101,8 @@ namespace rsfcycle
       std::vector<std::pair<std::string, Point<dim>>> observation;
       std::unique_ptr<const FrictionField<dim>>       friction_field;
 
-      /**
-       * The rate-weakening (b - a > 0) part of the contact as boxes in the
-       * rotated frame (flat, in y = 0): intervals in 2D, strips in 3D.
-       */
-      std::vector<BoundingBox<dim>> patch_boxes;
-      RTree<BoundingBox<dim>>       patch_tree;
+      /** The rate-weakening (b - a > 0) part of the contact. */
+      ContactPatch<dim> patch;
 
       void
       read_mesh(const std::string &file);

@@ -1,0 +1,147 @@
+#include <deal.II/base/utilities.h>
+#include <limits>
+#include <rsfcycle/format.h>
+#include <rsfcycle/scenes/mesh_file_input.h>
+#include <set>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace scenes
+  {
+    namespace mesh_file_input
+    {
+      void
+      fail(const std::string &entry, const std::string &message)
+      {
+        throw std::invalid_argument(section + "/" + entry + message);
+      }
+
+
+      std::string
+      format_point(const double *x, const unsigned int n)
+      {
+        std::string s = "(";
+        for (unsigned int d = 0; d < n; ++d)
+          s += (d ? ", " : "") + format_number(x[d]);
+        return s + ")";
+      }
+
+
+      template <int dim>
+      Tensor<1, dim>
+      parse_vector(const std::string &text, const std::string &entry)
+      {
+        const auto parts = Utilities::split_string_list(text, ',');
+        if (parts.size() != dim)
+          fail(entry,
+               " = " + text + ": needs " + std::to_string(dim) +
+                 " components (x, y" + (dim == 3 ? ", z" : "") + ")");
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = Utilities::string_to_double(parts[d]);
+        return v;
+      }
+
+
+      /** "1: contact, 2: load": tag -> role, each tag with one role. */
+      std::map<types::boundary_id, std::string>
+      parse_roles(const std::string &text)
+      {
+        const std::set<std::string>               allowed = {"contact",
+                                                             "load",
+                                                             "free",
+                                                             "free-slip"};
+        std::map<types::boundary_id, std::string> roles;
+        for (const auto &item : Utilities::split_string_list(text, ','))
+          {
+            const auto pair = Utilities::split_string_list(item, ':');
+            if (pair.size() != 2 || allowed.count(pair[1]) == 0)
+              fail("Boundary roles",
+                   ": '" + item +
+                     "' is not 'tag: role' with role contact, load, free or "
+                     "free-slip");
+            const auto tag = static_cast<types::boundary_id>(
+              Utilities::string_to_int(pair[0]));
+            const auto [it, inserted] = roles.emplace(tag, pair[1]);
+            if (!inserted && it->second != pair[1])
+              fail("Boundary roles",
+                   ": tag " + pair[0] + " has two roles (" + it->second + ", " +
+                     pair[1] + ")");
+          }
+        return roles;
+      }
+
+
+      /**
+       * "10: density 900, bulk modulus 5e4, Poisson ratio 0.3, shear
+       * viscosity 1e3, bulk viscosity 1e3; 11: ...".
+       */
+      std::map<types::material_id, Material>
+      parse_materials(const std::string &text)
+      {
+        const std::string                      entry = "Materials";
+        std::map<types::material_id, Material> materials;
+        for (const auto &region : Utilities::split_string_list(text, ';'))
+          {
+            const auto colon = region.find(':');
+            if (colon == std::string::npos)
+              fail(entry, ": '" + region + "' is not 'tag: properties'");
+            const auto tag =
+              static_cast<types::material_id>(Utilities::string_to_int(
+                Utilities::trim(region.substr(0, colon))));
+            std::map<std::string, double> values;
+            for (const auto &item :
+                 Utilities::split_string_list(region.substr(colon + 1), ','))
+              {
+                const auto space = item.find_last_of(' ');
+                if (space == std::string::npos)
+                  fail(entry, ": '" + item + "' is not 'name value'");
+                values[Utilities::trim(item.substr(0, space))] =
+                  Utilities::string_to_double(item.substr(space + 1));
+              }
+            Material   m;
+            const auto take = [&](const std::string &name,
+                                  const double       low,
+                                  const double       high,
+                                  const std::string &range) {
+              const auto it = values.find(name);
+              if (it == values.end())
+                fail(entry,
+                     ": tag " + std::to_string(tag) + " has no '" + name +
+                       "' (each tag needs density, bulk modulus, Poisson "
+                       "ratio, shear viscosity, bulk viscosity)");
+              if (!(it->second >= low && it->second <= high))
+                fail(entry,
+                     ": tag " + std::to_string(tag) + " " + name + " = " +
+                       format_number(it->second) + ": must be " + range);
+              const double value = it->second;
+              values.erase(it);
+              return value;
+            };
+            const double inf = std::numeric_limits<double>::max();
+            m.density        = take("density", 1e-300, inf, "> 0");
+            m.bulk_modulus   = take("bulk modulus", 1e-300, inf, "> 0");
+            m.poisson_ratio =
+              take("Poisson ratio", -0.999, 0.499, "in (-1, 0.5)");
+            m.shear_viscosity = take("shear viscosity", 0, inf, ">= 0");
+            m.bulk_viscosity  = take("bulk viscosity", 0, inf, ">= 0");
+            if (!values.empty())
+              fail(entry,
+                   ": tag " + std::to_string(tag) +
+                     " has an unknown property '" + values.begin()->first +
+                     "'");
+            if (!materials.emplace(tag, m).second)
+              fail(entry, ": tag " + std::to_string(tag) + " is given twice");
+          }
+        return materials;
+      }
+
+
+      template Tensor<1, 2>
+      parse_vector<2>(const std::string &, const std::string &);
+      template Tensor<1, 3>
+      parse_vector<3>(const std::string &, const std::string &);
+    } // namespace mesh_file_input
+  }   // namespace scenes
+} // namespace rsfcycle

@@ -224,6 +224,18 @@ namespace rsfcycle
                       "dynamic",
                       Selection("dynamic|quasi-static"),
                       "Newmark with inertia (15), or without the mass term");
+    prm.declare_entry(
+      "Theta",
+      "0.5",
+      Double(0.5, 1),
+      "theta of the time step: u_{n+1} = u_n + tau ((1 - theta) v_n + "
+      "theta v_{n+1}), and the same for the velocity from the acceleration "
+      "and for the slip rate of the state update. 0.5: the paper's Newmark "
+      "scheme (15), second order, no numerical damping (modes much stiffer "
+      "than the step, such as Kelvin-Voigt relaxation after an earthquake "
+      "in a km-scale model, then change sign from step to step). 1: "
+      "backward Euler, first order, damps them within a step. Between: "
+      "first order, damping in between [-]");
     prm.declare_entry("Fixed-point tolerance",
                       "1e-5",
                       Double(1e-300, 1),
@@ -290,6 +302,7 @@ namespace rsfcycle
     state_law             = prm.get("State law");
     coupling              = prm.get("Coupling");
     dynamics              = prm.get("Dynamics");
+    theta                 = prm.get_double("Theta");
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");

@@ -122,9 +122,8 @@ namespace rsfcycle
                 std::array<FullMatrix<double>, 3>    &matrices) {
           discretisation.cell_matrices(cell, *fe_values, matrices, *force);
         };
-      const bool dynamic      = solver.dynamics == "dynamic";
-      const auto coefficients = [dynamic](const double tau) {
-        return std::array<double, 3>{{dynamic ? 2. / tau : 0., 1., tau / 2}};
+      const auto coefficients = [scheme = solver.scheme()](const double tau) {
+        return scheme.step_coefficients(tau);
       };
       typename MG::Settings settings;
       settings.smoothing_steps = solver.smoothing_steps;
@@ -535,7 +534,8 @@ namespace rsfcycle
           p.alpha[k] = w[0] * s[0]->alpha[k] + w[1] * s[1]->alpha[k] +
                        w[2] * s[2]->alpha[k];
         return p;
-      });
+      },
+      parameters.solver.scheme().local_error_order());
     time_loop = std::make_unique<time::RunLoop<BodyState>>(
       parameters, *this, *controller, log, timer);
     return !time_loop->run(resume).interrupted;

@@ -2,6 +2,7 @@
 #define rsfcycle_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <rsfcycle/time/theta_scheme.h>
 #include <string>
 
 namespace rsfcycle
@@ -74,6 +75,7 @@ namespace rsfcycle
     std::string  state_law                  = "ageing";
     std::string  coupling                   = "fixed-point";
     std::string  dynamics                   = "dynamic";
+    double       theta                      = 0.5;
     double       fixed_point_tolerance      = 1e-5;
     unsigned int max_fixed_point_iterations = 20;
     std::string  linear_correction          = "multigrid";
@@ -89,6 +91,13 @@ namespace rsfcycle
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+
+    /** The time step's scheme: `Theta` and whether `Dynamics` has inertia. */
+    time::ThetaScheme
+    scheme() const
+    {
+      return {theta, dynamics == "dynamic"};
+    }
   };
 
   /** Subsection "Output": snapshots, profiles, events, progress. */

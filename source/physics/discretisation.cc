@@ -370,37 +370,37 @@ namespace rsfcycle
     /** The last four are kept: step doubling alternates tau/2, tau, 2 tau. */
     template <int dim>
     typename Discretisation<dim>::StepMatrix &
-    Discretisation<dim>::cached_step_matrix(const double tau,
-                                            const bool   dynamic)
+    Discretisation<dim>::cached_step_matrix(
+      const std::array<double, 3> &coefficients)
     {
       for (auto &entry : step_matrices)
-        if (entry.tau == tau && entry.dynamic == dynamic)
+        if (entry.coefficients == coefficients)
           return entry;
       if (step_matrices.size() >= 4)
         step_matrices.erase(step_matrices.begin());
       auto A = std::make_unique<la::LocalMatrix>();
-      A->combine({{1., &viscosity_local},
-                  {tau / 2, &stiffness_local},
-                  {dynamic ? 2. / tau : 0., &mass_local}});
-      step_matrices.push_back({tau, dynamic, std::move(A), nullptr});
+      A->combine({{coefficients[1], &viscosity_local},
+                  {coefficients[2], &stiffness_local},
+                  {coefficients[0], &mass_local}});
+      step_matrices.push_back({coefficients, std::move(A), nullptr});
       return step_matrices.back();
     }
 
 
     template <int dim>
     const la::LocalMatrix &
-    Discretisation<dim>::step_matrix(const double tau, const bool dynamic)
+    Discretisation<dim>::step_matrix(const std::array<double, 3> &coefficients)
     {
-      return *cached_step_matrix(tau, dynamic).local;
+      return *cached_step_matrix(coefficients).local;
     }
 
 
     template <int dim>
     const TrilinosWrappers::SparseMatrix &
-    Discretisation<dim>::assembled_step_matrix(const double tau,
-                                               const bool   dynamic)
+    Discretisation<dim>::assembled_step_matrix(
+      const std::array<double, 3> &coefficients)
     {
-      StepMatrix &entry = cached_step_matrix(tau, dynamic);
+      StepMatrix &entry = cached_step_matrix(coefficients);
       if (!entry.assembled)
         {
           if (stiffness_matrix.m() == 0)
@@ -408,9 +408,11 @@ namespace rsfcycle
                                    "were released");
           entry.assembled = std::make_unique<TrilinosWrappers::SparseMatrix>();
           entry.assembled->copy_from(viscosity_matrix);
-          entry.assembled->add(tau / 2, stiffness_matrix);
-          if (dynamic)
-            entry.assembled->add(2. / tau, mass_matrix);
+          if (coefficients[1] != 1)
+            entry.assembled->operator*=(coefficients[1]);
+          entry.assembled->add(coefficients[2], stiffness_matrix);
+          if (coefficients[0] != 0)
+            entry.assembled->add(coefficients[0], mass_matrix);
         }
       return *entry.assembled;
     }

@@ -205,12 +205,17 @@ namespace rsfcycle
                                const State *guess) const
     {
       // (15) for one degree of freedom; the spring force at t + tau is
-      // tau0 + k (u_lp - delta_n), delta_n = delta + tau/2 (V_old + V_n).
-      const double A = 2 * mass / tau + damping + tau * stiffness / 2;
+      // tau0 + k (u_lp - delta_n), delta_n = delta + tau/2 (V_old + V_n)
+      // (theta = 1/2; time::ThetaScheme in general).
+      const time::ThetaScheme scheme = parameters.solver.scheme();
+      const auto              c      = scheme.step_coefficients(tau);
+      const double A = c[0] * mass + c[1] * damping + c[2] * stiffness;
       const double rhs =
         prestress + stiffness * load_point_displacement(t + tau) -
-        stiffness * (old.slip + tau / 2 * old.velocity) +
-        (mass > 0 ? mass * (2 / tau * old.velocity + old.acceleration) : 0.);
+        stiffness * scheme.displacement(old.slip, old.velocity, 0., tau) +
+        (mass > 0 ?
+           mass * scheme.inertia_from_old(old.velocity, old.acceleration, tau) :
+           0.);
 
       friction::NodePotential phi;
       phi.params         = friction;
@@ -224,6 +229,7 @@ namespace rsfcycle
         coupling,
         parameters.solver.fixed_point_tolerance,
         parameters.solver.max_fixed_point_iterations,
+        scheme.theta,
         old.velocity,
         v,
         alpha,
@@ -246,10 +252,13 @@ namespace rsfcycle
       next.velocity               = v;
       next.alpha                  = alpha;
       next.fixed_point_iterations = *iterations;
-      next.slip = old.slip + tau / 2 * (old.velocity + next.velocity);
-      next.acceleration =
-        mass > 0 ? 2 / tau * (next.velocity - old.velocity) - old.acceleration :
-                   0.;
+      next.slip =
+        scheme.displacement(old.slip, old.velocity, next.velocity, tau);
+      next.acceleration = mass > 0 ? scheme.acceleration(old.velocity,
+                                                         next.velocity,
+                                                         old.acceleration,
+                                                         tau) :
+                                     0.;
       if (!std::isfinite(next.slip) || !std::isfinite(next.alpha) ||
           !std::isfinite(next.acceleration))
         return {};
@@ -340,7 +349,8 @@ namespace rsfcycle
                 p.alpha += w[i] * s[i]->alpha;
               }
             return p;
-          });
+          },
+          parameters.solver.scheme().local_error_order());
 
       dealii::TimerOutput  timer(log,
                                 dealii::TimerOutput::never,

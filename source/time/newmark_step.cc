@@ -19,6 +19,7 @@ namespace rsfcycle
       , discretisation(discretisation)
       , contact(contact)
       , tnnmg(tnnmg)
+      , scheme(solver.scheme())
       , state_law(friction::state_law_from_name(solver.state_law))
       , along_base(std::move(along_base))
     {}
@@ -30,15 +31,16 @@ namespace rsfcycle
                                       const double     tau) const
     {
       la::Vector rhs(discretisation.body_force), tmp(old.u);
-      tmp.add(tau / 2, old.v);
+      tmp.add(scheme.old_weight() * tau, old.v);
       la::Vector Ku;
       Ku.reinit(rhs);
       discretisation.stiffness_local.vmult(Ku, tmp);
       rhs -= Ku;
-      if (solver.dynamics == "dynamic")
+      if (scheme.dynamic)
         {
           tmp = old.a;
-          tmp.add(2. / tau, old.v);
+          tmp *= scheme.old_weight() / scheme.theta;
+          tmp.add(1. / (scheme.theta * tau), old.v);
           la::Vector Mv;
           Mv.reinit(rhs);
           discretisation.mass_local.vmult(Mv, tmp);
@@ -55,9 +57,9 @@ namespace rsfcycle
                                  const double     tau,
                                  const BodyState *guess)
     {
-      const bool             dynamic = solver.dynamics == "dynamic";
-      const la::LocalMatrix &A       = discretisation.step_matrix(tau, dynamic);
-      const la::Vector       rhs     = right_hand_side(old, tau);
+      const auto             coefficients = scheme.step_coefficients(tau);
+      const la::LocalMatrix &A   = discretisation.step_matrix(coefficients);
+      const la::Vector       rhs = right_hand_side(old, tau);
 
       BodyState next;
       next.v = guess ? guess->v : old.v;
@@ -68,9 +70,9 @@ namespace rsfcycle
       std::vector<friction::NodePotential> potentials = contact.potentials();
       solvers::SpatialProblem              problem;
       problem.local_A     = &A;
-      problem.assembled_A = [this, tau, dynamic]() -> const auto &
+      problem.assembled_A = [this, coefficients]() -> const auto &
       {
-        return discretisation.assembled_step_matrix(tau, dynamic);
+        return discretisation.assembled_step_matrix(coefficients);
       };
       problem.rhs        = &rhs;
       problem.fixed      = &discretisation.fixed;
@@ -152,6 +154,7 @@ namespace rsfcycle
                             Coupling::fixed_point,
         solver.fixed_point_tolerance,
         solver.max_fixed_point_iterations,
+        scheme.theta,
         old.v,
         next.v,
         alpha,
@@ -245,13 +248,13 @@ namespace rsfcycle
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
       next.u = old.u;
-      next.u.add(tau / 2, old.v, tau / 2, next.v);
-      if (solver.dynamics == "dynamic")
+      next.u.add(scheme.old_weight() * tau, old.v, scheme.theta * tau, next.v);
+      if (scheme.dynamic)
         {
           next.a = next.v;
           next.a -= old.v;
-          next.a *= 2. / tau;
-          next.a -= old.a;
+          next.a *= 1. / (scheme.theta * tau);
+          next.a.add(-scheme.old_weight() / scheme.theta, old.a);
         }
       else
         next.a.reinit(old.a);

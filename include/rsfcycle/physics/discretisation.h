@@ -98,18 +98,20 @@ namespace rsfcycle
       set_fixed_values(la::Vector &v, double t) const;
 
       /**
-       * The step matrix A = 2/tau M + C + tau/2 K (quasi-static: without
-       * M) in the rank's rows, kept for the last few step sizes.
+       * The step matrix A = c_M M + c_C C + c_K K in the rank's rows, with
+       * the factors of time::ThetaScheme::step_coefficients() (the
+       * trapezoidal step: 2/tau M + C + tau/2 K, quasi-static without M),
+       * kept for the last few step sizes.
        */
       const la::LocalMatrix &
-      step_matrix(double tau, bool dynamic);
+      step_matrix(const std::array<double, 3> &coefficients);
 
       /**
        * The same step matrix assembled as a Trilinos matrix (for algebraic
        * multigrid), built at the first request.
        */
       const TrilinosWrappers::SparseMatrix &
-      assembled_step_matrix(double tau, bool dynamic);
+      assembled_step_matrix(const std::array<double, 3> &coefficients);
 
       /**
        * Free the Trilinos M, C, K (kept only for assembled_step_matrix(),
@@ -182,13 +184,12 @@ namespace rsfcycle
 
       struct StepMatrix
       {
-        double                                          tau;
-        bool                                            dynamic;
+        std::array<double, 3>                           coefficients;
         std::unique_ptr<la::LocalMatrix>                local;
         std::unique_ptr<TrilinosWrappers::SparseMatrix> assembled;
       };
-      StepMatrix                         &
-      cached_step_matrix(double tau, bool dynamic);
+      StepMatrix &
+      cached_step_matrix(const std::array<double, 3> &coefficients);
       std::vector<StepMatrix> step_matrices;
     };
   } // namespace physics

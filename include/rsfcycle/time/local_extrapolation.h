@@ -24,7 +24,8 @@ namespace rsfcycle
      * two accepted steps (the second is returned by the next advance()
      * without a new solve); otherwise tau is halved and the step repeated.
      * After an accepted pair, tau is doubled if the estimate of the
-     * doubled step, 8 x estimate (the estimate grows as tau^3), is at most
+     * doubled step, 2^p x estimate (the estimate grows as tau^p: p = 3
+     * for the trapezoidal scheme, 2 for theta > 1/2), is at most
      * `doubling_threshold` x tolerance (`Time stepping/Doubling
      * threshold`, default 1; 0.5 until 2026-11). That is 3 spatial problems per
      * two accepted steps, against 3 - 4 per accepted step for the paper's
@@ -73,7 +74,8 @@ namespace rsfcycle
                          const double tolerance,
                          const double initial_step,
                          const double min_step,
-                         const double max_step)
+                         const double max_step,
+                         const double error_order = 3)
         : stepper(std::move(stepper))
         , distance(std::move(distance))
         , combine(std::move(combine))
@@ -84,6 +86,7 @@ namespace rsfcycle
         , tau(initial_step)
         , min_step(min_step)
         , max_step(max_step)
+        , error_order(error_order)
       {}
 
       void
@@ -110,7 +113,8 @@ namespace rsfcycle
                   return; // the step size of the interior steps stays
                 if (!ladder)
                   tau = std::min(dt * factor(estimate, 2.), max_step);
-                else if (8 * estimate <= doubling_threshold * tolerance &&
+                else if (std::pow(2., error_order) * estimate <=
+                           doubling_threshold * tolerance &&
                          2 * tau <= max_step)
                   tau *= 2;
                 return;
@@ -191,16 +195,21 @@ namespace rsfcycle
 
     private:
       /**
-       * The free step sizes' factor 0.9 (tolerance/estimate)^(1/3) (the
-       * estimate grows as tau^3), between 0.2 and `largest`.
+       * The free step sizes' factor 0.9 (tolerance/estimate)^(1/p) (the
+       * estimate grows as tau^p, p = error_order), between 0.2 and
+       * `largest`.
        */
       double
       factor(const double estimate, const double largest) const
       {
         if (!(estimate > 0))
           return largest;
+        const double ratio = tolerance / estimate;
         return std::min(largest,
-                        std::max(0.2, 0.9 * std::cbrt(tolerance / estimate)));
+                        std::max(0.2,
+                                 0.9 * (error_order == 3 ?
+                                          std::cbrt(ratio) :
+                                          std::pow(ratio, 1 / error_order))));
       }
 
       /**
@@ -289,6 +298,7 @@ namespace rsfcycle
       double               tau;
       double               min_step;
       double               max_step;
+      double               error_order; // the estimate grows as tau^p
       double               last_step        = 0;
       unsigned int         spatial_problems = 0;
       bool                 failed           = false;

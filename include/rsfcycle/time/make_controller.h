@@ -15,14 +15,16 @@ namespace rsfcycle
      * The controller named by `Time stepping/Controller` (fixed steps if
      * `Adaptive` is false), for any model: its stepper (which may start from
      * a guess), its distance (14) and how to combine three of its states
-     * into a prediction.
+     * into a prediction. `error_order` is the power of the step size that
+     * the local error grows with (time::ThetaScheme::local_error_order()).
      */
     template <typename State>
     std::unique_ptr<Controller<State>>
     make_controller(const TimeSteppingParameters                &ts,
                     typename LocalExtrapolation<State>::Stepper  stepper,
                     typename LocalExtrapolation<State>::Distance distance,
-                    typename LocalExtrapolation<State>::Combine  combine)
+                    typename LocalExtrapolation<State>::Combine  combine,
+                    const double                                 error_order)
     {
       if (ts.controller == "local-extrapolation" && ts.adaptive)
         return std::make_unique<LocalExtrapolation<State>>(
@@ -35,7 +37,8 @@ namespace rsfcycle
           ts.tolerance,
           ts.initial_step,
           ts.minimum_step,
-          ts.maximum_step);
+          ts.maximum_step,
+          error_order);
       if (ts.controller != "step-doubling" &&
           ts.controller != "local-extrapolation")
         throw std::invalid_argument(

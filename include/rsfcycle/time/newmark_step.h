@@ -13,6 +13,7 @@
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/solvers/tnnmg.h>
 #include <rsfcycle/time/model.h>
+#include <rsfcycle/time/theta_scheme.h>
 #include <string>
 #include <vector>
 
@@ -60,10 +61,12 @@ namespace rsfcycle
   namespace time
   {
     /**
-     * One Newmark step (15) of the continuum with the rate/state coupling
+     * One Newmark step (15) of the continuum (in general the theta scheme
+     * of `Solver/Theta`, time/theta_scheme.h) with the rate/state coupling
      * (18) of time/rate_state_coupling.h, whose velocity solves are TNNMG:
      * theta^0 = theta_{n-1}; v^k = TNNMG solution with theta^{k-1};
-     * theta^k from (17) with V = |(v_{n-1} + v^k)/2|; stop at
+     * theta^k from (17) with V = |(v_{n-1} + v^k)/2| (the scheme's
+     * weights); stop at
      * d(theta^k, theta^{k-1}) <= epsilon. With explicit coupling, the state
      * is updated once from V = |v_{n-1}| and one spatial problem is solved.
      * A failed step (no convergence, non-finite values) returns nothing and
@@ -116,7 +119,11 @@ namespace rsfcycle
       }
 
     private:
-      /** r = f - K (u + tau/2 v) (+ M (2/tau v + a), dynamic). */
+      /**
+       * r = f - K (u + (1 - theta) tau v) (+ M (v / (theta tau) + (1 -
+       * theta) / theta a), dynamic); theta = 1/2: f - K (u + tau/2 v) + M
+       * (2/tau v + a).
+       */
       la::Vector
       right_hand_side(const BodyState &old, double tau) const;
 
@@ -169,6 +176,7 @@ namespace rsfcycle
       physics::Discretisation<dim>                     &discretisation;
       const friction::ContactQuadrature<dim>           &contact;
       solvers::TNNMG                                   &tnnmg;
+      const ThetaScheme                                 scheme;
       const friction::StateLaw                          state_law;
       std::function<double(const dealii::Point<dim> &)> along_base;
 

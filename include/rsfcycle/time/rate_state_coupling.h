@@ -22,7 +22,8 @@ namespace rsfcycle
      * spring-slider) runs the same logic:
      *  - fixed point (18): alpha^0 = the old state; for k = 1, 2, ...:
      *    solve the velocity v^k with alpha^{k-1}; alpha^k = state update with
-     *    the mean slip rate |(v_old + v^k)/2|; stop when
+     *    the slip rate |(1 - theta) v_old + theta v^k| of the time step's
+     *    scheme (theta = 1/2: the mean of old and new); stop when
      *    distance(alpha^k, alpha^{k-1}) <= tolerance (19);
      *  - explicit decoupling: the state is updated once with the old slip
      *    rate |v_old|, then the velocity is solved once.
@@ -53,6 +54,7 @@ namespace rsfcycle
     couple_rate_and_state(const Coupling     coupling,
                           const double       tolerance,
                           const unsigned int max_iterations,
+                          const double       theta,
                           const Velocity    &v_old,
                           Velocity          &v,
                           StateVector       &alpha,
@@ -75,7 +77,7 @@ namespace rsfcycle
         {
           if (!solve_velocity(alpha, v))
             return {};
-          update_state(v, 0.5, alpha_new);
+          update_state(v, theta, alpha_new);
           const double d = distance(alpha_new, alpha);
           if (last_distance != nullptr)
             *last_distance = d;

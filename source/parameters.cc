@@ -222,8 +222,12 @@ namespace rsfcycle
                       "or explicit decoupling (state from the old velocity)");
     prm.declare_entry("Dynamics",
                       "dynamic",
-                      Selection("dynamic|quasi-static"),
-                      "Newmark with inertia (15), or without the mass term");
+                      Selection("dynamic|quasi-static|quasi-dynamic"),
+                      "dynamic: Newmark with inertia (15); quasi-static: "
+                      "without the mass term; quasi-dynamic: without the mass "
+                      "term and with the radiation damping eta V added to the "
+                      "friction on every contact node (eta of the scene, by "
+                      "default sqrt(G rho) of the material at the node)");
     prm.declare_entry(
       "Theta",
       "0.5",

@@ -22,7 +22,9 @@ namespace rsfcycle
     , scene(scene)
     , log(log)
     , timer(log, TimerOutput::never, TimerOutput::wall_times)
-    , discretisation(parameters.mesh, scene)
+    , discretisation(parameters.mesh,
+                     scene,
+                     parameters.solver.dynamics == "quasi-dynamic")
   {}
 
 

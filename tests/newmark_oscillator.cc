@@ -22,6 +22,7 @@
 // R(z) to 1e-8, for theta = 1/2, 3/4, 1 and z = 0.1, 1, 100: the
 // trapezoidal factor at z = 100 is -0.96 (the stiff mode flips sign and
 // hardly decays), backward Euler's 1/101.
+#include "block_scene.h"
 #include "tests.h"
 
 #include <cmath>
@@ -34,87 +35,6 @@
 
 using namespace dealii;
 using namespace rsfcycle;
-
-class Block : public scenes::Scene<2>
-{
-public:
-  /** Kelvin-Voigt relaxation time eta/G = eta_b/K [s]; 0: inviscid. */
-  double relaxation_time = 0;
-
-  void
-  create_coarse_mesh(Triangulation<2> &tria) const override
-  {
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              {4, 1},
-                                              Point<2>(0, 0),
-                                              Point<2>(1, 0.25));
-    for (const auto &face : tria.active_face_iterators())
-      if (face->at_boundary())
-        {
-          const Point<2> c = face->center();
-          face->set_boundary_id(std::abs(c[1]) < 1e-12 ? boundary_id::contact :
-                                std::abs(c[0] - 1) < 1e-12 ?
-                                                         boundary_id::backstop :
-                                                         boundary_id::surface);
-        }
-  }
-  double
-  distance_to_patch(const BoundingBox<2> &box, double margin) const override
-  {
-    return std::max(0., box.get_boundary_points().first.norm() - margin);
-  }
-  types::material_id
-  material_id(const Point<2> &, types::material_id) const override
-  {
-    return 0;
-  }
-  scenes::Material
-  material(types::material_id) const override
-  {
-    scenes::Material m;
-    m.density       = 1000;
-    m.bulk_modulus  = 1e6;
-    m.poisson_ratio = 0.25;
-    const double G  = 3 * m.bulk_modulus * (1 - 2 * m.poisson_ratio) /
-                     (2 * (1 + m.poisson_ratio));
-    m.shear_viscosity = relaxation_time * G;
-    m.bulk_viscosity  = relaxation_time * m.bulk_modulus;
-    return m;
-  }
-  Tensor<1, 2>
-  gravity() const override
-  {
-    return Tensor<1, 2>();
-  }
-  Tensor<1, 2>
-  vertical() const override
-  {
-    return Tensor<1, 2>({0., 1.});
-  }
-  Tensor<1, 2>
-  backstop_velocity(double) const override
-  {
-    return Tensor<1, 2>();
-  }
-  friction::Parameters
-  friction_parameters(const Point<2> &) const override
-  {
-    friction::Parameters p;
-    p.mu_star = 0;
-    p.b       = 0;
-    return p;
-  }
-  double
-  convergence_rate() const override
-  {
-    return 1e-3;
-  }
-  std::vector<std::pair<std::string, Point<2>>>
-  observation_points() const override
-  {
-    return {{"top", Point<2>(0.5, 0.25)}};
-  }
-};
 
 class InitialVelocity : public Function<2>
 {

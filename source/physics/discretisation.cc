@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.templates.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
@@ -19,7 +20,8 @@ namespace rsfcycle
   {
     template <int dim>
     Discretisation<dim>::Discretisation(const MeshParameters     &mesh,
-                                        const scenes::Scene<dim> &scene)
+                                        const scenes::Scene<dim> &scene,
+                                        const bool radiation_damping)
       : triangulation(MPI_COMM_WORLD,
                       Triangulation<dim>::limit_level_difference_at_vertices,
                       parallel::distributed::Triangulation<
@@ -30,6 +32,7 @@ namespace rsfcycle
       , scalar_dof_handler(triangulation)
       , mesh(mesh)
       , scene(scene)
+      , radiation_damping(radiation_damping)
     {}
 
 
@@ -201,12 +204,10 @@ namespace rsfcycle
     {
       const scenes::Material material     = scene.material(cell->material_id());
       const double           bulk_modulus = material.bulk_modulus;
-      const double           nu           = material.poisson_ratio;
-      const double           shear_modulus =
-        3. * bulk_modulus * (1. - 2. * nu) / (2. * (1. + nu));
-      const double         lambda  = bulk_modulus - 2. / 3. * shear_modulus;
-      const Tensor<1, dim> gravity = scene.gravity();
-      const double         eta_lambda =
+      const double           shear_modulus = material.shear_modulus();
+      const double           lambda  = bulk_modulus - 2. / 3. * shear_modulus;
+      const Tensor<1, dim>   gravity = scene.gravity();
+      const double           eta_lambda =
         material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
       const FEValuesExtractors::Vector displacement(0);
 
@@ -241,6 +242,53 @@ namespace rsfcycle
                     JxW;
                 }
               cell_force(i) += material.density * gravity * phi_i * JxW;
+            }
+        }
+      if (radiation_damping)
+        add_radiation_damping(cell, material, cell_viscosity);
+    }
+
+
+    template <int dim>
+    template <class Iterator>
+    void
+    Discretisation<dim>::add_radiation_damping(
+      const Iterator         &cell,
+      const scenes::Material &material,
+      FullMatrix<double>     &cell_viscosity) const
+    {
+      std::unique_ptr<FEFaceValues<dim>> fe_face;
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary() ||
+              cell->face(f)->boundary_id() != boundary_id::contact)
+            continue;
+          if (!fe_face)
+            fe_face =
+              std::make_unique<FEFaceValues<dim>>(fe,
+                                                  QTrapezoid<dim - 1>(),
+                                                  update_values |
+                                                    update_quadrature_points |
+                                                    update_JxW_values);
+          fe_face->reinit(cell, f);
+          // lumped (vertex quadrature, as the friction's weights): eta w_i
+          // on the diagonal of every tangential component (not y, the
+          // normal of the base in the rotated frame)
+          for (const unsigned int q : fe_face->quadrature_point_indices())
+            {
+              const double eta_JxW =
+                scene.radiation_damping(fe_face->quadrature_point(q),
+                                        material) *
+                fe_face->JxW(q);
+              for (const unsigned int i : fe_face->dof_indices())
+                {
+                  const unsigned int component =
+                    fe.system_to_component_index(i).first;
+                  if (component != 1)
+                    cell_viscosity(i, i) += eta_JxW *
+                                            fe_face->shape_value(i, q) *
+                                            fe_face->shape_value(i, q);
+                }
             }
         }
     }

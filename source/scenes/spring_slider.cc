@@ -47,7 +47,7 @@ namespace rsfcycle
                         Double(0),
                         "Mass per unit area of the base m [kg/m^2]; 0 gives "
                         "the quasi-dynamic spring-slider (so does "
-                        "Solver/Dynamics = quasi-static)");
+                        "Solver/Dynamics = quasi-static or quasi-dynamic)");
       prm.declare_entry("Stiffness",
                         "2.5e8",
                         Double(0),
@@ -144,7 +144,9 @@ namespace rsfcycle
       output_period    = prm.get_double("Reference output period");
       sample_spacing   = prm.get_double("Reference sample spacing");
       prm.leave_subsection();
-      if (parameters.solver.dynamics == "quasi-static")
+      // quasi-dynamic is quasi-static here: the damping is the scene's
+      // `Radiation damping` in every mode
+      if (parameters.solver.dynamics != "dynamic")
         mass = 0;
       if (mass == 0 && damping == 0 && stiffness == 0)
         throw std::invalid_argument(

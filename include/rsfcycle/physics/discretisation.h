@@ -43,8 +43,13 @@ namespace rsfcycle
     class Discretisation
     {
     public:
+      /**
+       * `radiation_damping`: add the dashpot eta V of the quasi-dynamic
+       * approximation (Scene::radiation_damping()) on the contact to C.
+       */
       Discretisation(const MeshParameters     &mesh,
-                     const scenes::Scene<dim> &scene);
+                     const scenes::Scene<dim> &scene,
+                     bool                      radiation_damping = false);
       ~Discretisation();
 
       /**
@@ -65,7 +70,10 @@ namespace rsfcycle
       void
       setup_boundary_conditions();
 
-      /** M, C, K and the gravity load, with hanging nodes condensed. */
+      /**
+       * M, C, K and the gravity load, with hanging nodes condensed; C holds
+       * the radiation damping on the contact if it is on.
+       */
       void
       assemble_matrices();
 
@@ -181,6 +189,19 @@ namespace rsfcycle
 
       const MeshParameters     &mesh;
       const scenes::Scene<dim> &scene;
+      const bool                radiation_damping;
+
+      /**
+       * The radiation damping of a cell's contact faces: eta w_i on the
+       * diagonal of every tangential component, w_i the vertex-quadrature
+       * weights of the friction (ContactQuadrature), so that it is the
+       * quadratic term eta |v_i|^2 w_i / 2 of the node's dissipation.
+       */
+      template <class Iterator>
+      void
+      add_radiation_damping(const Iterator         &cell,
+                            const scenes::Material &material,
+                            FullMatrix<double>     &cell_viscosity) const;
 
       struct StepMatrix
       {

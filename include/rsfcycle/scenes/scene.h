@@ -1,6 +1,7 @@
 #ifndef rsfcycle_scenes_scene_h
 #define rsfcycle_scenes_scene_h
 
+#include <cmath>
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -27,6 +28,14 @@ namespace rsfcycle
       double poisson_ratio   = 0.3; // nu [-]
       double shear_viscosity = 1e3; // [Pa s]
       double bulk_viscosity  = 1e3; // [Pa s]
+
+      /** G = 3 K (1 - 2 nu) / (2 (1 + nu)) [Pa]. */
+      double
+      shear_modulus() const
+      {
+        return 3. * bulk_modulus * (1. - 2. * poisson_ratio) /
+               (2. * (1. + poisson_ratio));
+      }
     };
 
     /**
@@ -100,6 +109,21 @@ namespace rsfcycle
       initial_state(const Point<dim> &) const
       {
         return 0;
+      }
+
+      /**
+       * The radiation damping eta [Pa s/m] of `Solver/Dynamics =
+       * quasi-dynamic` at a point of the contact, in a cell of `material`:
+       * the shear stress eta V that the quasi-dynamic approximation adds to
+       * the friction. By default the shear impedance rho c_s = sqrt(G rho)
+       * of the material: a body sliding on a rigid base radiates into its
+       * own side only (for a fault between two equal half-spaces reduced
+       * to one side with G/2 and rho/2 this is the usual G / (2 c_s)).
+       */
+      virtual double
+      radiation_damping(const Point<dim> &, const Material &material) const
+      {
+        return std::sqrt(material.shear_modulus() * material.density);
       }
 
       /** The plate convergence rate v0 [m/s] (event threshold, output). */

@@ -183,11 +183,15 @@ namespace rsfcycle
   ProblemBase<dim>::compute_initial_state()
   {
     const auto [u, reaction] = discretisation.gravity_equilibrium();
-    n_tensile_nodes          = contact.set_normal_forces(reaction);
+    if (const auto normal_stress = scene.normal_stress())
+      contact.set_normal_forces(normal_stress);
+    else
+      n_tensile_nodes = contact.set_normal_forces(reaction);
     for (const auto &node : contact.nodes())
       if (!std::isfinite(node.normal_force))
         throw std::runtime_error(
-          "non-finite normal stress from the gravity equilibrium at the base "
+          "non-finite normal stress (gravity equilibrium or prescribed) at "
+          "the base "
           "node at s = " +
           format_number(scene.along_base_coordinate(node.position)) + " m");
 

@@ -154,6 +154,16 @@ namespace rsfcycle
 
 
     template <int dim>
+    void
+    ContactQuadrature<dim>::set_normal_forces(
+      const std::function<double(const Point<dim> &)> &normal_stress)
+    {
+      for (auto &info : node_info)
+        info.normal_force = info.weight * normal_stress(info.position);
+    }
+
+
+    template <int dim>
     double
     ContactQuadrature<dim>::state_distance(
       const std::vector<double> &alpha1,

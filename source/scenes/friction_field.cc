@@ -50,7 +50,18 @@ namespace rsfcycle
          "",
          "Initial state theta_0 [s] on the contact, a function of x, y (and "
          "z in 3D) [m]; > 0. Empty: theta_0 = L / V* (the steady state at "
-         "V*)"}};
+         "V*)"},
+        {"Normal stress",
+         "",
+         "Compressive normal stress |sigma_n| [Pa] on the contact, a "
+         "function of x, y (and z in 3D) [m]; > 0, constant in time. Empty: "
+         "the normal stress of the gravity equilibrium"},
+        {"Radiation damping",
+         "",
+         "Radiation damping eta [Pa s/m] on the contact (Solver/Dynamics = "
+         "quasi-dynamic: the shear stress eta V is added to the friction), "
+         "a function of x, y (and z in 3D) [m]; >= 0. Empty: the shear "
+         "impedance sqrt(G rho) of the material next to the contact"}};
 
 
       /** A muparser expression of the coordinates, checked once. */
@@ -123,6 +134,10 @@ namespace rsfcycle
       functions.cohesion  = get("Cohesion");
       if (!prm.get("Initial state").empty())
         functions.initial_state = get("Initial state");
+      if (!prm.get("Normal stress").empty())
+        functions.normal_stress = get("Normal stress");
+      if (!prm.get("Radiation damping").empty())
+        functions.radiation_damping = get("Radiation damping");
       return FrictionField(functions);
     }
 
@@ -150,6 +165,26 @@ namespace rsfcycle
         return 0;
       return std::log(f.initial_state->value(x) * f.v_star->value(x) /
                       f.L->value(x));
+    }
+
+
+    template <int dim>
+    std::optional<double>
+    FrictionField<dim>::normal_stress(const Point<dim> &x) const
+    {
+      if (!f.normal_stress)
+        return {};
+      return f.normal_stress->value(x);
+    }
+
+
+    template <int dim>
+    std::optional<double>
+    FrictionField<dim>::radiation_damping(const Point<dim> &x) const
+    {
+      if (!f.radiation_damping)
+        return {};
+      return f.radiation_damping->value(x);
     }
 
 
@@ -193,6 +228,16 @@ namespace rsfcycle
         {
           const double theta = f.initial_state->value(x);
           require(theta > 0, "Initial state", theta, "> 0");
+        }
+      if (f.normal_stress)
+        {
+          const double sigma = f.normal_stress->value(x);
+          require(sigma > 0, "Normal stress", sigma, "> 0");
+        }
+      if (f.radiation_damping)
+        {
+          const double eta = f.radiation_damping->value(x);
+          require(eta >= 0, "Radiation damping", eta, ">= 0");
         }
     }
 

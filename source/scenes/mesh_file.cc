@@ -504,6 +504,28 @@ namespace rsfcycle
 
 
     template <int dim>
+    std::function<double(const Point<dim> &)>
+    MeshFile<dim>::normal_stress() const
+    {
+      if (!friction_field->normal_stress(Point<dim>()))
+        return {};
+      return [this](const Point<dim> &p) {
+        return *friction_field->normal_stress(to_physical(p));
+      };
+    }
+
+
+    template <int dim>
+    double
+    MeshFile<dim>::radiation_damping(const Point<dim> &p,
+                                     const Material   &material) const
+    {
+      return friction_field->radiation_damping(to_physical(p))
+        .value_or(Scene<dim>::radiation_damping(p, material));
+    }
+
+
+    template <int dim>
     double
     MeshFile<dim>::convergence_rate() const
     {

@@ -59,6 +59,8 @@ check min-step "Minimum step" 'subsection Time stepping\nset Minimum step = 1\ns
 check event-interval "Event output interval" 'subsection Output\nset Event output interval = 100\nend'
 check max-iterations "Maximum fixed-point iterations" 'subsection Solver\nset Maximum fixed-point iterations = 0\nend'
 check bool "Adaptive" 'subsection Time stepping\nset Adaptive = maybe\nend'
+check theta "Theta" 'subsection Solver\nset Theta = 0.4\nend'
+check dynamics "Dynamics" 'subsection Solver\nset Dynamics = quasi\nend'
 
 # Scene = mesh-file (issue 16): tags, cells, the contact's plane, the
 # vectors and the function-valued friction; the meshes are in tests/meshes.
@@ -87,6 +89,8 @@ check_mesh mesh-observation "Observation points" $simplex "$one_material\nset Ob
 check_mesh mesh-expression "Friction/a" $simplex "$one_material\nsubsection Friction\nset a = if(x >\nend"
 check_mesh mesh-negative-a "Friction/a" $simplex "$one_material\nsubsection Friction\nset a = 0.01 - x\nend"
 check_mesh mesh-initial-state "Friction/Initial state" $simplex "$one_material\nsubsection Friction\nset Initial state = -1\nend"
+check_mesh mesh-normal-stress "Friction/Normal stress" $simplex "$one_material\nsubsection Friction\nset Normal stress = 1e6 * (x - 0.5)\nend"
+check_mesh mesh-radiation-damping "Friction/Radiation damping" $simplex "$one_material\nsubsection Friction\nset Radiation damping = -1\nend"
 
 # missing parameter file
 "$exe" no-such-file.prm > /dev/null 2> missing.err

@@ -67,6 +67,11 @@ namespace rsfcycle
       unsigned int
       set_normal_forces(const la::Vector &reaction);
 
+      /** Normal forces w_i |sigma_n(x_i)| from a prescribed normal stress. */
+      void
+      set_normal_forces(
+        const std::function<double(const Point<dim> &)> &normal_stress);
+
       /** The state distance (14) between two states (all ranks). */
       double
       state_distance(const std::vector<double> &alpha1,

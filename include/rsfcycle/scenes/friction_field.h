@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <memory>
+#include <optional>
 #include <rsfcycle/friction/rate_state.h>
 #include <string>
 
@@ -20,7 +21,8 @@ namespace rsfcycle
      * every continuum scene describes its fault. The wedge builds the
      * functions from its patch (piecewise constant), the mesh-file scene
      * parses them from the .prm (muparser expressions in x, y, z); both
-     * hand the solver the same friction::Parameters per node.
+     * hand the solver the same friction::Parameters per node. Optionally
+     * also the normal stress and the radiation damping on the contact.
      */
     template <int dim>
     class FrictionField
@@ -37,6 +39,10 @@ namespace rsfcycle
         std::shared_ptr<const Function<dim>> cohesion;  // [Pa]
         /** theta_0 [s]; null: theta_0 = L / V*, i.e. alpha = 0. */
         std::shared_ptr<const Function<dim>> initial_state;
+        /** |sigma_n| [Pa]; null: from the gravity equilibrium. */
+        std::shared_ptr<const Function<dim>> normal_stress;
+        /** eta [Pa s/m]; null: sqrt(G rho) of the material. */
+        std::shared_ptr<const Function<dim>> radiation_damping;
       };
 
       explicit FrictionField(Functions functions);
@@ -63,6 +69,14 @@ namespace rsfcycle
       /** The initial state alpha = log(theta_0 V* / L) at x. */
       double
       initial_alpha(const Point<dim> &x) const;
+
+      /** The prescribed |sigma_n| at x; none: from gravity. */
+      std::optional<double>
+      normal_stress(const Point<dim> &x) const;
+
+      /** The prescribed radiation damping at x; none: the material's. */
+      std::optional<double>
+      radiation_damping(const Point<dim> &x) const;
 
       /** b - a at x (> 0: rate weakening). */
       double

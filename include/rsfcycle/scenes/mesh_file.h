@@ -65,6 +65,11 @@ namespace rsfcycle
       friction_parameters(const Point<dim> &p) const override;
       double
       initial_state(const Point<dim> &p) const override;
+      std::function<double(const Point<dim> &)>
+      normal_stress() const override;
+      double
+      radiation_damping(const Point<dim> &p,
+                        const Material   &material) const override;
       double
       convergence_rate() const override;
       std::vector<std::pair<std::string, Point<dim>>>

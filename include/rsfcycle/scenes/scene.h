@@ -8,6 +8,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
+#include <functional>
 #include <memory>
 #include <rsfcycle/friction/rate_state.h>
 #include <string>
@@ -124,6 +125,18 @@ namespace rsfcycle
       radiation_damping(const Point<dim> &, const Material &material) const
       {
         return std::sqrt(material.shear_modulus() * material.density);
+      }
+
+      /**
+       * The compressive normal stress |sigma_n| [Pa] on the contact as a
+       * function of the point (rotated frame), constant in time; an empty
+       * function (the default): the normal stress of the gravity
+       * equilibrium.
+       */
+      virtual std::function<double(const Point<dim> &)>
+      normal_stress() const
+      {
+        return {};
       }
 
       /** The plate convergence rate v0 [m/s] (event threshold, output). */

@@ -18,7 +18,20 @@ namespace rsfcycle
     prm.declare_entry("Dimension",
                       "2",
                       Integer(2, 3),
-                      "Space dimension: 2 (plane strain) or 3");
+                      "Space dimension: 2 (plane strain, or antiplane with "
+                      "Displacement = antiplane) or 3");
+    prm.declare_entry("Displacement",
+                      "vector",
+                      Selection("vector|antiplane"),
+                      "vector: every component of the displacement (plane "
+                      "strain in 2D); antiplane (Dimension = 2, Scene = "
+                      "mesh-file): only the component out of the mesh's "
+                      "plane, one unknown per node, scalar elasticity with "
+                      "the shear modulus, shear viscosity and density; "
+                      "in-plane gravity does not load it, so the contact's "
+                      "normal stress must be prescribed (Mesh file/Friction/"
+                      "Normal stress), and the load velocity is one number "
+                      "(out of the plane)");
     prm.declare_entry("Scene",
                       "wedge",
                       Selection(scenes::scene_names()),
@@ -45,6 +58,7 @@ namespace rsfcycle
   RunParameters::parse_parameters(ParameterHandler &prm)
   {
     dimension         = prm.get_integer("Dimension");
+    antiplane         = prm.get("Displacement") == "antiplane";
     scene             = prm.get("Scene");
     end_time          = prm.get_double("End time");
     stop_after_events = prm.get_integer("Stop after events");
@@ -424,6 +438,11 @@ namespace rsfcycle
   void
   Parameters::validate() const
   {
+    if (run.antiplane && (run.dimension != 2 || run.scene != "mesh-file"))
+      throw std::invalid_argument(
+        "Displacement = antiplane: needs Dimension = 2 and Scene = "
+        "mesh-file (this run has Dimension = " +
+        std::to_string(run.dimension) + ", Scene = " + run.scene + ")");
     const auto &ts = time_stepping;
     if (!(ts.minimum_step <= ts.initial_step))
       throw std::invalid_argument(

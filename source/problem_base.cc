@@ -24,7 +24,8 @@ namespace rsfcycle
     , timer(log, TimerOutput::never, TimerOutput::wall_times)
     , discretisation(parameters.mesh,
                      scene,
-                     parameters.solver.dynamics == "quasi-dynamic")
+                     {parameters.run.antiplane,
+                      parameters.solver.dynamics == "quasi-dynamic"})
   {}
 
 
@@ -63,19 +64,21 @@ namespace rsfcycle
                    const SolverParameters                 &solver,
                    const solvers::LinearCorrectionControl &control)
     {
-      using MG = solvers::MultigridCorrection<dim>;
+      using MG                        = solvers::MultigridCorrection<dim>;
+      const unsigned int n_components = discretisation.fe.n_components();
       std::vector<typename MG::DirichletBoundary> dirichlet = {
-        {boundary_id::backstop, ComponentMask(dim, true)}};
-      {
-        std::vector<bool> normal(dim, false);
-        normal[1] = true;
-        dirichlet.push_back({boundary_id::contact, ComponentMask(normal)});
-      }
-      {
-        std::vector<bool> lateral(dim, false);
-        lateral[dim - 1] = true;
-        dirichlet.push_back({boundary_id::lateral, ComponentMask(lateral)});
-      }
+        {boundary_id::backstop, ComponentMask(n_components, true)}};
+      for (const auto &[id, component] :
+           {std::make_pair(boundary_id::contact,
+                           discretisation.normal_component()),
+            std::make_pair(boundary_id::lateral,
+                           discretisation.lateral_component())})
+        if (component < n_components)
+          {
+            std::vector<bool> mask(n_components, false);
+            mask[component] = true;
+            dirichlet.push_back({id, ComponentMask(mask)});
+          }
 
       // The contact nodes of all ranks, rank by rank: position, lumped
       // weight and the components of their dofs.
@@ -88,7 +91,7 @@ namespace rsfcycle
             if (cell->face(f)->at_boundary() &&
                 cell->face(f)->boundary_id() == boundary_id::contact)
               for (const unsigned int v : cell->face(f)->vertex_indices())
-                for (unsigned int c = 0; c < dim; ++c)
+                for (unsigned int c = 0; c < n_components; ++c)
                   component_of_dof[cell->face(f)->vertex_dof_index(v, c)] = c;
       const auto &nodes = contact.contact_set().nodes;
       std::vector<typename MG::ContactVertex> vertices(nodes.size());
@@ -185,6 +188,9 @@ namespace rsfcycle
     const auto [u, reaction] = discretisation.gravity_equilibrium();
     if (const auto normal_stress = scene.normal_stress())
       contact.set_normal_forces(normal_stress);
+    else if (parameters.run.antiplane)
+      throw std::logic_error("antiplane without a prescribed normal stress "
+                             "(the scene must refuse it)");
     else
       n_tensile_nodes = contact.set_normal_forces(reaction);
     for (const auto &node : contact.nodes())
@@ -242,12 +248,15 @@ namespace rsfcycle
             fe_values.reinit(cell_and_point.first);
             std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
             cell_and_point.first->get_dof_indices(indices);
+            // the displacement along the physical vertical (antiplane:
+            // the out-of-plane displacement)
             const Tensor<1, dim> up = scene.vertical();
             for (unsigned int i = 0; i < indices.size(); ++i)
               {
                 const unsigned int c = fe.system_to_component_index(i).first;
                 w.emplace_back(discretisation.local_index(indices[i]),
-                               fe_values.shape_value(i, 0) * up[c]);
+                               fe_values.shape_value(i, 0) *
+                                 (parameters.run.antiplane ? 1. : up[c]));
               }
           }
         found.push_back(w.empty() ? 0. : 1.);
@@ -463,7 +472,8 @@ namespace rsfcycle
   ProblemBase<dim>::describe(std::ostream &log) const
   {
     const auto &tria = discretisation.triangulation;
-    log << "Scene: " << parameters.run.scene << " (" << dim << "D)\n"
+    log << "Scene: " << parameters.run.scene << " (" << dim << "D"
+        << (parameters.run.antiplane ? ", antiplane" : "") << ")\n"
         << "Mesh: " << tria.n_global_active_cells() << " cells, "
         << tria.n_global_levels() << " levels, "
         << discretisation.dof_handler.n_dofs() << " unknowns, "

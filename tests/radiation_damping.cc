@@ -2,8 +2,8 @@
 // dashpot eta V that Discretisation adds to C on the contact.
 //  - On the block of block_scene.h (inviscid, so C is the dashpot alone),
 //    refined twice globally and twice toward the origin (cells of two
-//    sizes on the base): the row sums of C for a unit x velocity equal eta w_i at
-//    every contact node, w_i the friction's lumped weights
+//    sizes on the base): the row sums of C for a unit x velocity equal eta w_i
+//    at every contact node, w_i the friction's lumped weights
 //    (ContactQuadrature, through ProblemBase::contact_nodes()); they add up
 //    to eta times the base length 1 m; C has nothing in y (the normal).
 //  - The default eta is the shear impedance sqrt(G rho) of the material
@@ -38,7 +38,9 @@ check(const double material_scale, const double expected_eta)
   problem.setup();
 
   // the same mesh, its matrices with the dashpot
-  physics::Discretisation<2> discretisation(parameters.mesh, scene, true);
+  physics::Discretisation<2> discretisation(parameters.mesh,
+                                            scene,
+                                            {false, true});
   discretisation.make_grid();
   discretisation.setup_system();
   discretisation.setup_boundary_conditions();

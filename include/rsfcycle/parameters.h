@@ -13,6 +13,7 @@ namespace rsfcycle
   struct RunParameters
   {
     unsigned int dimension         = 2;
+    bool         antiplane         = false; // Displacement = antiplane
     std::string  scene             = "wedge";
     double       end_time          = 1000;
     unsigned int stop_after_events = 0;

@@ -57,13 +57,18 @@ namespace rsfcycle
                 cell->level(),
                 cell->index(),
                 &scalar_dof_handler);
+              // the normal component y and, in 3D, the lateral z (the
+              // antiplane model has one, tangential, component)
+              const unsigned int n_components = fe.n_components();
               for (const unsigned int v : face->vertex_indices())
                 if (partitioner.in_local_range(face->vertex_dof_index(v, 0)))
                   base_vertices[face->vertex_dof_index(v, 0)] = {
                     face->vertex(v),
                     scalar_cell->face(f)->vertex_dof_index(v, 0),
-                    face->vertex_dof_index(v, 1),
-                    face->vertex_dof_index(v, dim - 1)};
+                    n_components > 1 ? face->vertex_dof_index(v, 1) :
+                                       numbers::invalid_dof_index,
+                    n_components == 3 ? face->vertex_dof_index(v, 2) :
+                                        numbers::invalid_dof_index};
               if (!cell->is_locally_owned())
                 continue;
               fe_face.reinit(cell, f);
@@ -92,7 +97,7 @@ namespace rsfcycle
             continue;
           solvers::ContactNode                 node;
           std::vector<types::global_dof_index> tangential = {x_dof};
-          if (dim == 3)
+          if (vertex.lateral_dof != numbers::invalid_dof_index)
             tangential.push_back(vertex.lateral_dof);
           for (const auto dof : tangential)
             if (!fixed[partitioner.global_to_local(dof)])
@@ -104,7 +109,9 @@ namespace rsfcycle
           info.weight     = weights(x_dof);
           info.params     = parameters_at(vertex.position);
           info.scalar_dof = vertex.scalar_dof;
-          info.normal_dof = partitioner.global_to_local(vertex.normal_dof);
+          info.normal_dof = vertex.normal_dof != numbers::invalid_dof_index ?
+                              partitioner.global_to_local(vertex.normal_dof) :
+                              numbers::invalid_dof_index;
           contact.nodes.push_back(node);
           node_info.push_back(info);
           area += info.weight;

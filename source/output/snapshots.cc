@@ -220,18 +220,26 @@ namespace rsfcycle
 
       InFrame<DataOut<dim>, dim> data_out;
       data_out.attach_dof_handler(discretisation.dof_handler);
+      // vectors, or in the antiplane model the out-of-plane component
+      const unsigned int n_components = discretisation.fe.n_components();
+      const bool         vectors      = n_components == dim;
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
-        vector_part(dim,
-                    DataComponentInterpretation::component_is_part_of_vector);
-      data_out.add_data_vector(state.u,
-                               std::vector<std::string>(dim, "displacement"),
-                               DataOut<dim>::type_dof_data,
-                               vector_part);
+        interpretation(
+          n_components,
+          vectors ? DataComponentInterpretation::component_is_part_of_vector :
+                    DataComponentInterpretation::component_is_scalar);
+      const std::string suffix = vectors ? "" : "_out_of_plane";
+      data_out.add_data_vector(
+        state.u,
+        std::vector<std::string>(n_components, "displacement" + suffix),
+        DataOut<dim>::type_dof_data,
+        interpretation);
       data_out.add_data_vector(state.v,
-                               std::vector<std::string>(dim, "velocity"),
+                               std::vector<std::string>(n_components,
+                                                        "velocity" + suffix),
                                DataOut<dim>::type_dof_data,
-                               vector_part);
+                               interpretation);
       data_out.add_data_vector(scalar_dofs, field[slip_rate], "slip_rate");
       data_out.add_data_vector(scalar_dofs,
                                field[log_slip_rate],
@@ -252,7 +260,7 @@ namespace rsfcycle
         material[cell->active_cell_index()] = cell->material_id();
       data_out.add_data_vector(material, "material_id");
       data_out.build_patches();
-      data_out.to_frame(frame, 2); // displacement, velocity
+      data_out.to_frame(frame, vectors ? 2 : 0); // displacement, velocity
 
       DataOutBase::VtkFlags flags;
       flags.time  = t;

@@ -21,18 +21,19 @@ namespace rsfcycle
     template <int dim>
     Discretisation<dim>::Discretisation(const MeshParameters     &mesh,
                                         const scenes::Scene<dim> &scene,
-                                        const bool radiation_damping)
+                                        const Options            &options)
       : triangulation(MPI_COMM_WORLD,
                       Triangulation<dim>::limit_level_difference_at_vertices,
                       parallel::distributed::Triangulation<
                         dim>::construct_multigrid_hierarchy)
-      , fe(FE_Q<dim>(1), dim)
+      , fe(FE_Q<dim>(1), options.antiplane ? 1 : dim)
       , dof_handler(triangulation)
       , scalar_fe(1)
       , scalar_dof_handler(triangulation)
       , mesh(mesh)
       , scene(scene)
-      , radiation_damping(radiation_damping)
+      , options(options)
+      , prestress(scene.shear_prestress())
     {}
 
 
@@ -165,7 +166,7 @@ namespace rsfcycle
                 continue;
               const types::boundary_id id = face->boundary_id();
               for (const unsigned int v : face->vertex_indices())
-                for (unsigned int c = 0; c < dim; ++c)
+                for (unsigned int c = 0; c < fe.n_components(); ++c)
                   {
                     const auto dof = face->vertex_dof_index(v, c);
                     if (!is_local(dof))
@@ -178,8 +179,10 @@ namespace rsfcycle
                           backstop_dofs.emplace_back(i, c);
                         fixed[i] = true;
                       }
-                    else if ((id == boundary_id::lateral && c == dim - 1) ||
-                             (id == boundary_id::contact && c == 1))
+                    else if ((id == boundary_id::lateral &&
+                              c == lateral_component()) ||
+                             (id == boundary_id::contact &&
+                              c == normal_component()))
                       fixed[i] = true;
                   }
             }
@@ -216,46 +219,84 @@ namespace rsfcycle
         matrix = 0;
       cell_force                                        = 0;
       auto &[cell_mass, cell_viscosity, cell_stiffness] = matrices;
+      if (options.antiplane)
+        antiplane_cell_matrices(fe_values, material, matrices);
+      else
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double JxW = fe_values.JxW(q);
+            for (const unsigned int i : fe_values.dof_indices())
+              {
+                const Tensor<1, dim> phi_i =
+                  fe_values[displacement].value(i, q);
+                const SymmetricTensor<2, dim> eps_i =
+                  fe_values[displacement].symmetric_gradient(i, q);
+                const double div_i = trace(eps_i);
+                for (const unsigned int j : fe_values.dof_indices())
+                  {
+                    const SymmetricTensor<2, dim> eps_j =
+                      fe_values[displacement].symmetric_gradient(j, q);
+                    const double div_j   = trace(eps_j);
+                    const double eps_eps = eps_i * eps_j;
+                    cell_mass(i, j) += material.density * phi_i *
+                                       fe_values[displacement].value(j, q) *
+                                       JxW;
+                    cell_stiffness(i, j) +=
+                      (lambda * div_i * div_j + 2. * shear_modulus * eps_eps) *
+                      JxW;
+                    cell_viscosity(i, j) +=
+                      (eta_lambda * div_i * div_j +
+                       2. * material.shear_viscosity * eps_eps) *
+                      JxW;
+                  }
+                cell_force(i) += material.density * gravity * phi_i * JxW;
+              }
+          }
+      if (options.radiation_damping)
+        add_contact_terms(cell, &material, &cell_viscosity, nullptr);
+    }
+
+
+    /**
+     * The antiplane model: w the out-of-plane displacement, stress
+     * G grad w, viscous stress eta_s grad w; in-plane gravity does not load
+     * it.
+     */
+    template <int dim>
+    void
+    Discretisation<dim>::antiplane_cell_matrices(
+      const FEValues<dim>               &fe_values,
+      const scenes::Material            &material,
+      std::array<FullMatrix<double>, 3> &matrices) const
+    {
+      auto &[cell_mass, cell_viscosity, cell_stiffness] = matrices;
+      const double shear_modulus = material.shear_modulus();
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
           const double JxW = fe_values.JxW(q);
           for (const unsigned int i : fe_values.dof_indices())
-            {
-              const Tensor<1, dim> phi_i = fe_values[displacement].value(i, q);
-              const SymmetricTensor<2, dim> eps_i =
-                fe_values[displacement].symmetric_gradient(i, q);
-              const double div_i = trace(eps_i);
-              for (const unsigned int j : fe_values.dof_indices())
-                {
-                  const SymmetricTensor<2, dim> eps_j =
-                    fe_values[displacement].symmetric_gradient(j, q);
-                  const double div_j   = trace(eps_j);
-                  const double eps_eps = eps_i * eps_j;
-                  cell_mass(i, j) += material.density * phi_i *
-                                     fe_values[displacement].value(j, q) * JxW;
-                  cell_stiffness(i, j) +=
-                    (lambda * div_i * div_j + 2. * shear_modulus * eps_eps) *
-                    JxW;
-                  cell_viscosity(i, j) +=
-                    (eta_lambda * div_i * div_j +
-                     2. * material.shear_viscosity * eps_eps) *
-                    JxW;
-                }
-              cell_force(i) += material.density * gravity * phi_i * JxW;
-            }
+            for (const unsigned int j : fe_values.dof_indices())
+              {
+                const double grad_grad =
+                  fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q);
+                cell_mass(i, j) += material.density *
+                                   fe_values.shape_value(i, q) *
+                                   fe_values.shape_value(j, q) * JxW;
+                cell_stiffness(i, j) += shear_modulus * grad_grad * JxW;
+                cell_viscosity(i, j) +=
+                  material.shear_viscosity * grad_grad * JxW;
+              }
         }
-      if (radiation_damping)
-        add_radiation_damping(cell, material, cell_viscosity);
     }
 
 
     template <int dim>
     template <class Iterator>
     void
-    Discretisation<dim>::add_radiation_damping(
-      const Iterator         &cell,
-      const scenes::Material &material,
-      FullMatrix<double>     &cell_viscosity) const
+    Discretisation<dim>::add_contact_terms(const Iterator         &cell,
+                                           const scenes::Material *material,
+                                           FullMatrix<double> *cell_viscosity,
+                                           Vector<double>     *cell_force) const
     {
       std::unique_ptr<FEFaceValues<dim>> fe_face;
       for (const unsigned int f : cell->face_indices())
@@ -271,23 +312,29 @@ namespace rsfcycle
                                                     update_quadrature_points |
                                                     update_JxW_values);
           fe_face->reinit(cell, f);
-          // lumped (vertex quadrature, as the friction's weights): eta w_i
-          // on the diagonal of every tangential component (not y, the
-          // normal of the base in the rotated frame)
+          // lumped (vertex quadrature, as the friction's weights) on every
+          // tangential component (not y, the normal of the base in the
+          // rotated frame): eta w_i on the diagonal, tau_0 w_i in the force
           for (const unsigned int q : fe_face->quadrature_point_indices())
             {
-              const double eta_JxW =
-                scene.radiation_damping(fe_face->quadrature_point(q),
-                                        material) *
-                fe_face->JxW(q);
+              const Point<dim> &x   = fe_face->quadrature_point(q);
+              const double      JxW = fe_face->JxW(q);
+              const double      eta_JxW =
+                cell_viscosity ? scene.radiation_damping(x, *material) * JxW :
+                                      0.;
+              const Tensor<1, dim> traction =
+                cell_force ? prestress(x) : Tensor<1, dim>();
               for (const unsigned int i : fe_face->dof_indices())
                 {
                   const unsigned int component =
                     fe.system_to_component_index(i).first;
-                  if (component != 1)
-                    cell_viscosity(i, i) += eta_JxW *
-                                            fe_face->shape_value(i, q) *
-                                            fe_face->shape_value(i, q);
+                  if (component == normal_component())
+                    continue;
+                  const double phi = fe_face->shape_value(i, q);
+                  if (cell_viscosity)
+                    (*cell_viscosity)(i, i) += eta_JxW * phi * phi;
+                  if (cell_force)
+                    (*cell_force)(i) += traction[component] * phi * JxW;
                 }
             }
         }
@@ -325,6 +372,22 @@ namespace rsfcycle
       for (auto *matrix : {&mass_matrix, &viscosity_matrix, &stiffness_matrix})
         matrix->compress(VectorOperation::add);
       body_force.compress(VectorOperation::add);
+
+      // the shear prestress, kept apart from gravity: the gravity
+      // equilibrium (frictionless base) must not see it
+      reinit(prestress_force);
+      if (prestress)
+        for (const auto &active_cell : dof_handler.active_cell_iterators())
+          if (active_cell->is_locally_owned())
+            {
+              cell_force = 0;
+              add_contact_terms(active_cell, nullptr, nullptr, &cell_force);
+              active_cell->get_dof_indices(dof_indices);
+              hanging_constraints.distribute_local_to_global(cell_force,
+                                                             dof_indices,
+                                                             prestress_force);
+            }
+      prestress_force.compress(VectorOperation::add);
       mass_local.initialize(mass_matrix, partitioner);
       viscosity_local.initialize(viscosity_matrix, partitioner);
       stiffness_local.initialize(stiffness_matrix, partitioner);

@@ -56,6 +56,12 @@ namespace rsfcycle
          "Compressive normal stress |sigma_n| [Pa] on the contact, a "
          "function of x, y (and z in 3D) [m]; > 0, constant in time. Empty: "
          "the normal stress of the gravity equilibrium"},
+        {"Shear prestress",
+         "",
+         "Shear stress tau_0 [Pa] on the contact that is not from the "
+         "body's deformation (SEAS BP1's initial shear stress), constant in "
+         "time, acting on the body along the load velocity, a function of "
+         "x, y (and z in 3D) [m]. Empty: none"},
         {"Radiation damping",
          "",
          "Radiation damping eta [Pa s/m] on the contact (Solver/Dynamics = "
@@ -64,10 +70,14 @@ namespace rsfcycle
          "impedance sqrt(G rho) of the material next to the contact"}};
 
 
-      /** A muparser expression of the coordinates, checked once. */
-      template <int dim>
-      std::shared_ptr<const Function<dim>>
-      parse_expression(const std::string &expression, const std::string &entry)
+    } // namespace
+
+
+    template <int dim>
+    std::shared_ptr<const Function<dim>>
+    FrictionField<dim>::parse_expression(const std::string &expression,
+                                         const std::string &entry)
+    {
       {
         const std::string variables = dim == 2 ? "x,y" : "x,y,z";
         auto              function  = std::make_shared<FunctionParser<dim>>(1);
@@ -97,7 +107,7 @@ namespace rsfcycle
         std::cerr.rdbuf(cerr_buffer);
         return function;
       }
-    } // namespace
+    }
 
 
     template <int dim>
@@ -123,7 +133,7 @@ namespace rsfcycle
     FrictionField<dim>::parse(ParameterHandler &prm, const std::string &section)
     {
       const auto get = [&](const char *name) {
-        return parse_expression<dim>(prm.get(name), section + "/" + name);
+        return parse_expression(prm.get(name), section + "/" + name);
       };
       Functions functions;
       functions.a         = get("a");
@@ -136,6 +146,8 @@ namespace rsfcycle
         functions.initial_state = get("Initial state");
       if (!prm.get("Normal stress").empty())
         functions.normal_stress = get("Normal stress");
+      if (!prm.get("Shear prestress").empty())
+        functions.shear_prestress = get("Shear prestress");
       if (!prm.get("Radiation damping").empty())
         functions.radiation_damping = get("Radiation damping");
       return FrictionField(functions);
@@ -175,6 +187,16 @@ namespace rsfcycle
       if (!f.normal_stress)
         return {};
       return f.normal_stress->value(x);
+    }
+
+
+    template <int dim>
+    std::optional<double>
+    FrictionField<dim>::shear_prestress(const Point<dim> &x) const
+    {
+      if (!f.shear_prestress)
+        return {};
+      return f.shear_prestress->value(x);
     }
 
 
@@ -233,6 +255,11 @@ namespace rsfcycle
         {
           const double sigma = f.normal_stress->value(x);
           require(sigma > 0, "Normal stress", sigma, "> 0");
+        }
+      if (f.shear_prestress)
+        {
+          const double tau = f.shear_prestress->value(x);
+          require(true, "Shear prestress", tau, "finite");
         }
       if (f.radiation_damping)
         {

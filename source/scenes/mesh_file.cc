@@ -58,6 +58,14 @@ namespace rsfcycle
                           "quadrilaterals in 2D, hexahedra in 3D) of Scene = "
                           "mesh-file, relative to the working directory");
         prm.declare_entry(
+          "Refine where",
+          "",
+          Patterns::Anything(),
+          "The part of the contact that the mesh is refined toward "
+          "(Mesh/Local refinements with the refinement law): where this "
+          "function of x, y (and z in 3D) [m] is > 0. Empty: where the "
+          "fault is rate weakening, b - a > 0");
+        prm.declare_entry(
           "Boundary roles",
           "",
           Patterns::Anything(),
@@ -86,11 +94,13 @@ namespace rsfcycle
                           "dip direction");
         prm.declare_entry("Load velocity",
                           "-50e-6, 0",
-                          Patterns::List(Patterns::Double(), 2, 3),
+                          Patterns::List(Patterns::Double(), 1, 3),
                           "Velocity of the load boundaries in the mesh's "
                           "coordinates (2 or 3 components as the mesh) [m/s], "
                           "parallel to the contact; its magnitude is the "
-                          "plate rate v0 (event threshold, output)");
+                          "plate rate v0 (event threshold, output). With "
+                          "Displacement = antiplane one number: the velocity "
+                          "out of the mesh's plane");
         prm.declare_entry("Ramp time",
                           "100",
                           Patterns::Double(0),
@@ -120,14 +130,23 @@ namespace rsfcycle
                                          prm.get_integer("Local refinements");
       prm.leave_subsection();
 
+      antiplane = prm.get("Displacement") == "antiplane";
       prm.enter_subsection(section);
       const std::string file  = prm.get("File");
       const auto        roles = parse_roles(prm.get("Boundary roles"));
       materials               = parse_materials(prm.get("Materials"));
       g = parse_vector<dim>(prm.get("Gravity"), "Gravity");
-      load_velocity =
-        parse_vector<dim>(prm.get("Load velocity"), "Load velocity");
-      ramp_time                          = prm.get_double("Ramp time");
+      if (antiplane)
+        load_velocity[0] =
+          parse_vector<1>(prm.get("Load velocity"), "Load velocity")[0];
+      else
+        load_velocity =
+          parse_vector<dim>(prm.get("Load velocity"), "Load velocity");
+      ramp_time = prm.get_double("Ramp time");
+      if (!prm.get("Refine where").empty())
+        refine_where =
+          FrictionField<dim>::parse_expression(prm.get("Refine where"),
+                                               section + "/Refine where");
       const std::string observation_text = prm.get("Observation points");
       prm.enter_subsection("Friction");
       friction_field = std::make_unique<FrictionField<dim>>(
@@ -135,6 +154,10 @@ namespace rsfcycle
       prm.leave_subsection();
       prm.leave_subsection();
 
+      if (antiplane && !friction_field->normal_stress(Point<dim>()))
+        fail("Friction/Normal stress",
+             ": must be given with Displacement = antiplane (in-plane "
+             "gravity does not load the out-of-plane displacement)");
       if (load_velocity.norm() == 0)
         fail("Load velocity",
              ": must not be zero (its magnitude is the plate rate v0)");
@@ -387,7 +410,8 @@ namespace rsfcycle
             face->set_boundary_id(id_of.at(role));
           }
 
-      load_rotated = rotation * load_velocity;
+      // antiplane: component 0 is the one out of the plane, not rotated
+      load_rotated = antiplane ? load_velocity : rotation * load_velocity;
       if (std::abs(load_rotated[1]) > 1e-6 * load_rotated.norm())
         fail("Load velocity",
              " = " + format_point(&load_velocity[0], dim) +
@@ -399,8 +423,9 @@ namespace rsfcycle
 
     /**
      * The friction functions checked on a grid of every coarse contact
-     * face, and the rate-weakening part of the contact (b - a > 0) as the
-     * patch of the refinement laws.
+     * face, and the part of the contact where `Refine where` > 0 (by
+     * default the rate-weakening part, b - a > 0) as the patch of the
+     * refinement laws.
      */
     template <int dim>
     void
@@ -419,7 +444,8 @@ namespace rsfcycle
       patch.build(
         coarse,
         [this](const Point<dim> &p) {
-          return friction_field->b_minus_a(to_physical(p)) > 0;
+          return refine_where ? refine_where->value(to_physical(p)) > 0 :
+                                friction_field->b_minus_a(to_physical(p)) > 0;
         },
         n_refinements);
     }
@@ -511,6 +537,19 @@ namespace rsfcycle
         return {};
       return [this](const Point<dim> &p) {
         return *friction_field->normal_stress(to_physical(p));
+      };
+    }
+
+
+    template <int dim>
+    std::function<Tensor<1, dim>(const Point<dim> &)>
+    MeshFile<dim>::shear_prestress() const
+    {
+      if (!friction_field->shear_prestress(Point<dim>()))
+        return {};
+      return [this](const Point<dim> &p) {
+        return *friction_field->shear_prestress(to_physical(p)) * load_rotated /
+               load_rotated.norm();
       };
     }
 

@@ -36,7 +36,9 @@ namespace rsfcycle
         if (parts.size() != dim)
           fail(entry,
                " = " + text + ": needs " + std::to_string(dim) +
-                 " components (x, y" + (dim == 3 ? ", z" : "") + ")");
+                 (dim == 1 ? " component" :
+                             " components (x, y" +
+                               std::string(dim == 3 ? ", z" : "") + ")"));
         Tensor<1, dim> v;
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = Utilities::string_to_double(parts[d]);
@@ -138,6 +140,8 @@ namespace rsfcycle
       }
 
 
+      template Tensor<1, 1>
+      parse_vector<1>(const std::string &, const std::string &);
       template Tensor<1, 2>
       parse_vector<2>(const std::string &, const std::string &);
       template Tensor<1, 3>

@@ -31,6 +31,7 @@ namespace rsfcycle
                                       const double     tau) const
     {
       la::Vector rhs(discretisation.body_force), tmp(old.u);
+      rhs += discretisation.prestress_force;
       tmp.add(scheme.old_weight() * tau, old.v);
       la::Vector Ku;
       Ku.reinit(rhs);

@@ -61,6 +61,7 @@ check max-iterations "Maximum fixed-point iterations" 'subsection Solver\nset Ma
 check bool "Adaptive" 'subsection Time stepping\nset Adaptive = maybe\nend'
 check theta "Theta" 'subsection Solver\nset Theta = 0.4\nend'
 check dynamics "Dynamics" 'subsection Solver\nset Dynamics = quasi\nend'
+check antiplane-wedge "Displacement = antiplane" 'set Displacement = antiplane'
 
 # Scene = mesh-file (issue 16): tags, cells, the contact's plane, the
 # vectors and the function-valued friction; the meshes are in tests/meshes.
@@ -90,6 +91,8 @@ check_mesh mesh-expression "Friction/a" $simplex "$one_material\nsubsection Fric
 check_mesh mesh-negative-a "Friction/a" $simplex "$one_material\nsubsection Friction\nset a = 0.01 - x\nend"
 check_mesh mesh-initial-state "Friction/Initial state" $simplex "$one_material\nsubsection Friction\nset Initial state = -1\nend"
 check_mesh mesh-normal-stress "Friction/Normal stress" $simplex "$one_material\nsubsection Friction\nset Normal stress = 1e6 * (x - 0.5)\nend"
+check_mesh mesh-antiplane-normal-stress "Normal stress" $simplex "$one_material\nset Load velocity = 50e-6\nend\nset Displacement = antiplane\nsubsection Mesh file"
+check_mesh mesh-antiplane-load "Load velocity" $simplex "$one_material\nend\nset Displacement = antiplane\nsubsection Mesh file"
 check_mesh mesh-radiation-damping "Friction/Radiation damping" $simplex "$one_material\nsubsection Friction\nset Radiation damping = -1\nend"
 
 # missing parameter file

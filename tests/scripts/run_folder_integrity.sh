@@ -153,9 +153,9 @@ else
     fail "resume after the failed write"
   fi
 
-  # a VTU snapshot over the limit (parameters.prm, about 11 kB, fits)
-  make_wedge_prm vtu 3
-  limited 16 "$exe" vtu.prm > vtu.out 2> vtu.err
+  # a VTU snapshot over the limit (parameters.prm, about 19 kB, fits)
+  make_wedge_prm vtu 5
+  limited 32 "$exe" vtu.prm > vtu.out 2> vtu.err
   status=$?
   if [ $status -eq 1 ] &&
      one_line_error vtu.err "vtu/solution/solution-00000.vtu: File too large"; then

@@ -12,6 +12,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <functional>
 #include <memory>
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
@@ -29,7 +30,8 @@ namespace rsfcycle
     /**
      * The discretisation of the Kelvin-Voigt body (MODEL.md §1-2): the
      * scene's coarse mesh refined toward the seismogenic patch,
-     * FE_Q(1)^dim with its multigrid level dofs and hanging-node
+     * FE_Q(1)^dim (antiplane: FE_Q(1), the out-of-plane component) with
+     * its multigrid level dofs and hanging-node
      * constraints, the mass, viscosity and stiffness matrices M, C, K and
      * the gravity load (assembled once; cell_matrices() gives the same cell
      * integrals on the multigrid levels), the Dirichlet dofs, and the step
@@ -43,13 +45,24 @@ namespace rsfcycle
     class Discretisation
     {
     public:
-      /**
-       * `radiation_damping`: add the dashpot eta V of the quasi-dynamic
-       * approximation (Scene::radiation_damping()) on the contact to C.
-       */
+      /** What is modelled beyond the mesh. */
+      struct Options
+      {
+        /**
+         * One displacement component, out of the plane of a 2D mesh
+         * (scalar elasticity), instead of dim.
+         */
+        bool antiplane = false;
+        /**
+         * Add the dashpot eta V of the quasi-dynamic approximation
+         * (Scene::radiation_damping()) on the contact to C.
+         */
+        bool radiation_damping = false;
+      };
+
       Discretisation(const MeshParameters     &mesh,
                      const scenes::Scene<dim> &scene,
-                     bool                      radiation_damping = false);
+                     const Options            &options = Options());
       ~Discretisation();
 
       /**
@@ -71,8 +84,9 @@ namespace rsfcycle
       setup_boundary_conditions();
 
       /**
-       * M, C, K and the gravity load, with hanging nodes condensed; C holds
-       * the radiation damping on the contact if it is on.
+       * M, C, K and the load (gravity, the scene's shear prestress on the
+       * contact), with hanging nodes condensed; C holds the radiation
+       * damping on the contact if it is on.
        */
       void
       assemble_matrices();
@@ -128,6 +142,27 @@ namespace rsfcycle
       void
       release_assembled_matrices();
 
+      /**
+       * The component normal to the base (y), fixed on the contact;
+       * numbers::invalid_unsigned_int in the antiplane model (its only
+       * component is tangential everywhere).
+       */
+      unsigned int
+      normal_component() const
+      {
+        return fe.n_components() > 1 ? 1 : numbers::invalid_unsigned_int;
+      }
+
+      /**
+       * The component fixed on free-slip (lateral) walls: z in 3D,
+       * numbers::invalid_unsigned_int in 2D.
+       */
+      unsigned int
+      lateral_component() const
+      {
+        return fe.n_components() == 3 ? 2 : numbers::invalid_unsigned_int;
+      }
+
       /** For every locally owned dof, its vector component. */
       std::vector<unsigned int>
       dof_components() const;
@@ -160,6 +195,12 @@ namespace rsfcycle
       /** The same in the rank's rows for the kernels (LocalMatrix). */
       la::LocalMatrix mass_local, viscosity_local, stiffness_local;
       la::Vector      body_force;
+      /**
+       * The scene's shear prestress on the contact as nodal forces (zero
+       * without one); a load of every time step, not of the gravity
+       * equilibrium.
+       */
+      la::Vector prestress_force;
       /** CG iterations of the last gravity equilibrium. */
       unsigned int gravity_iterations = 0;
       /**
@@ -189,19 +230,32 @@ namespace rsfcycle
 
       const MeshParameters     &mesh;
       const scenes::Scene<dim> &scene;
-      const bool                radiation_damping;
+      const Options             options;
+
+      /** M, C, K of a cell in the antiplane model (scalar elasticity). */
+      void
+      antiplane_cell_matrices(
+        const FEValues<dim>               &fe_values,
+        const scenes::Material            &material,
+        std::array<FullMatrix<double>, 3> &matrices) const;
+
+      /** The scene's shear prestress on the contact (empty: none). */
+      const std::function<Tensor<1, dim>(const Point<dim> &)> prestress;
 
       /**
-       * The radiation damping of a cell's contact faces: eta w_i on the
-       * diagonal of every tangential component, w_i the vertex-quadrature
-       * weights of the friction (ContactQuadrature), so that it is the
-       * quadratic term eta |v_i|^2 w_i / 2 of the node's dissipation.
+       * The terms of a cell's contact faces: the radiation damping eta w_i
+       * on the diagonal of every tangential component, w_i the
+       * vertex-quadrature weights of the friction (ContactQuadrature), so
+       * that it is the quadratic term eta |v_i|^2 w_i / 2 of the node's
+       * dissipation (if `cell_viscosity` is given); the shear prestress
+       * tau_0 w_i in the force (if `cell_force` is given).
        */
       template <class Iterator>
       void
-      add_radiation_damping(const Iterator         &cell,
-                            const scenes::Material &material,
-                            FullMatrix<double>     &cell_viscosity) const;
+      add_contact_terms(const Iterator         &cell,
+                        const scenes::Material *material,
+                        FullMatrix<double>     *cell_viscosity,
+                        Vector<double>         *cell_force) const;
 
       struct StepMatrix
       {

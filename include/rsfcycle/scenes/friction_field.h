@@ -41,6 +41,8 @@ namespace rsfcycle
         std::shared_ptr<const Function<dim>> initial_state;
         /** |sigma_n| [Pa]; null: from the gravity equilibrium. */
         std::shared_ptr<const Function<dim>> normal_stress;
+        /** tau_0 [Pa] along the load; null: none. */
+        std::shared_ptr<const Function<dim>> shear_prestress;
         /** eta [Pa s/m]; null: sqrt(G rho) of the material. */
         std::shared_ptr<const Function<dim>> radiation_damping;
       };
@@ -62,6 +64,13 @@ namespace rsfcycle
       static FrictionField
       parse(ParameterHandler &prm, const std::string &section);
 
+      /**
+       * A muparser expression of the coordinates x, y (z), checked once;
+       * a malformed one throws std::invalid_argument naming `entry`.
+       */
+      static std::shared_ptr<const Function<dim>>
+      parse_expression(const std::string &expression, const std::string &entry);
+
       /** Parameters and cohesion at x. */
       friction::Parameters
       parameters(const Point<dim> &x) const;
@@ -73,6 +82,10 @@ namespace rsfcycle
       /** The prescribed |sigma_n| at x; none: from gravity. */
       std::optional<double>
       normal_stress(const Point<dim> &x) const;
+
+      /** The shear prestress tau_0 at x; none: no prestress. */
+      std::optional<double>
+      shear_prestress(const Point<dim> &x) const;
 
       /** The prescribed radiation damping at x; none: the material's. */
       std::optional<double>

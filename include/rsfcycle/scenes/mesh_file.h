@@ -67,6 +67,8 @@ namespace rsfcycle
       initial_state(const Point<dim> &p) const override;
       std::function<double(const Point<dim> &)>
       normal_stress() const override;
+      std::function<Tensor<1, dim>(const Point<dim> &)>
+      shear_prestress() const override;
       double
       radiation_damping(const Point<dim> &p,
                         const Material   &material) const override;
@@ -100,6 +102,10 @@ namespace rsfcycle
 
       std::map<types::material_id, Material> materials;
       Tensor<1, dim>                         g, up, load_velocity;
+      /** `Refine where` (null: b - a > 0). */
+      std::shared_ptr<const Function<dim>> refine_where;
+      /** Displacement = antiplane: load_velocity[0] is out of the plane. */
+      bool antiplane = false;
       /** The load velocity in the rotated frame, parallel to the contact. */
       Tensor<1, dim>                                  load_rotated;
       double                                          ramp_time;

@@ -139,6 +139,19 @@ namespace rsfcycle
         return {};
       }
 
+      /**
+       * A shear traction on the body at the contact, constant in time
+       * [Pa], as a vector of the rotated frame at a point of the contact:
+       * the part of the fault's shear stress that is not from the body's
+       * deformation (SEAS BP1's initial shear stress tau_0). An empty
+       * function (the default): none.
+       */
+      virtual std::function<Tensor<1, dim>(const Point<dim> &)>
+      shear_prestress() const
+      {
+        return {};
+      }
+
       /** The plate convergence rate v0 [m/s] (event threshold, output). */
       virtual double
       convergence_rate() const = 0;

@@ -1,0 +1,52 @@
+// SEAS BP1 (Erickson et al. 2020), the one-sided (symmetric) half-space of
+// prm/seas-bp1-qd.prm in the benchmark's coordinates: x >= 0 the distance
+// from the fault, y = -depth. The fault x = 0 carries rate-and-state
+// friction down to W_f = 40 km (tag 1, contact) and creeps at the plate
+// rate below (tag 2, load); the remote side x = L is loaded at the plate
+// rate as well (tag 2); the free surface y = 0 and the bottom y = -L are
+// traction free (tag 3). Coarse cells: 1.6 km along the fault (25 on the
+// frictional part, so that k refinements give 1600 / 2^k m), growing by
+// 1.3 per cell away from it (L = 400 km, about 17 cells).
+// Regenerate: gmsh -2 -format msh2 -o seas-bp1.msh seas-bp1.geo
+// (prm/meshes/seas-bp1-half.geo is the same with L = 200 km, for the
+// domain-size check.)
+If (!Exists(L))
+  L = 400e3;
+EndIf
+W = 40e3;   // frictional fault
+h = 1.6e3;  // coarse cells on the fault
+r = 1.3;    // growth away from it
+// the number of cells of growth r from h that span a length s
+n_far = Ceil(Log(1 + (r - 1) * (L - W) / h) / Log(r));
+n_x = Ceil(Log(1 + (r - 1) * L / h) / Log(r));
+
+Point(1) = {0, 0, 0};
+Point(2) = {0, -W, 0};
+Point(3) = {0, -L, 0};
+Point(4) = {L, -L, 0};
+Point(5) = {L, -W, 0};
+Point(6) = {L, 0, 0};
+
+Line(1) = {1, 2}; // fault, frictional
+Line(2) = {2, 3}; // fault, creeping
+Line(3) = {3, 4}; // bottom
+Line(4) = {4, 5}; // remote side, lower
+Line(5) = {5, 6}; // remote side, upper
+Line(6) = {6, 1}; // free surface
+Line(7) = {2, 5}; // the depth W_f through the body
+
+Transfinite Curve{1, 5} = W / h + 1;
+Transfinite Curve{2} = n_far + 1 Using Progression r;
+Transfinite Curve{4} = n_far + 1 Using Progression 1 / r;
+Transfinite Curve{3, 7} = n_x + 1 Using Progression r;
+Transfinite Curve{6} = n_x + 1 Using Progression 1 / r;
+
+Curve Loop(1) = {1, 7, 5, 6};  Plane Surface(1) = {1};
+Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};
+Transfinite Surface{1, 2};
+Recombine Surface{1, 2};
+
+Physical Curve(1) = {1};          // contact
+Physical Curve(2) = {2, 4, 5};    // load
+Physical Curve(3) = {3, 6};       // free
+Physical Surface(10) = {1, 2};

@@ -2,7 +2,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/householder.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -12,6 +11,7 @@
 #include <deal.II/multigrid/mg_tools.h>
 #include <deal.II/multigrid/multigrid.h>
 #include <map>
+#include <rsfcycle/solvers/coarse_direct.h>
 #include <rsfcycle/solvers/local_sor.h>
 #include <rsfcycle/solvers/multigrid_correction.h>
 
@@ -20,48 +20,6 @@ namespace rsfcycle
   namespace solvers
   {
     using namespace dealii;
-
-    namespace
-    {
-      /**
-       * The coarse level by Householder least squares (deal.II's
-       * MGCoarseGridHouseholder, which takes serial vectors only): the
-       * coarse matrix and right-hand side are gathered onto every rank and
-       * solved there redundantly (the coarse mesh does not grow with the
-       * number of ranks).
-       */
-      class CoarseHouseholder : public MGCoarseGridBase<la::Vector>
-      {
-      public:
-        void
-        initialize(const FullMatrix<double> &matrix)
-        {
-          householder.initialize(matrix);
-        }
-
-        void
-        operator()(const unsigned int,
-                   la::Vector       &dst,
-                   const la::Vector &src) const override
-        {
-          // buffers kept: the coarse solve runs in every V-cycle
-          const auto &partitioner = *src.get_partitioner();
-          b.reinit(src.size(), false);
-          x.reinit(dst.size(), true);
-          for (unsigned int i = 0; i < src.locally_owned_size(); ++i)
-            b[partitioner.local_to_global(i)] = src.local_element(i);
-          if (partitioner.n_mpi_processes() > 1)
-            Utilities::MPI::sum(b, partitioner.get_mpi_communicator(), b);
-          householder.least_squares(x, b);
-          for (unsigned int i = 0; i < dst.locally_owned_size(); ++i)
-            dst.local_element(i) = x[partitioner.local_to_global(i)];
-        }
-
-      private:
-        Householder<double>    householder;
-        mutable Vector<double> b, x;
-      };
-    } // namespace
 
 
     /**
@@ -78,8 +36,7 @@ namespace rsfcycle
       /** Original diagonal blocks of the contact blocks, by level. */
       std::vector<std::vector<std::array<double, 4>>> original;
 
-      FullMatrix<double>     coarse_matrix;
-      CoarseHouseholder      coarse;
+      CoarseDirect           coarse;
       mg::Matrix<la::Vector> mg_matrix;
       mg::Matrix<la::Vector> mg_interface_up;
       mg::Matrix<la::Vector> mg_interface_down;
@@ -408,18 +365,9 @@ namespace rsfcycle
           }
 
       // the coarse matrix, whole on every rank
-      const la::LocalMatrix &coarse = ops.local_matrices[0];
-      const unsigned int     n0     = dof_handler.n_dofs(0);
-      ops.coarse_matrix.reinit(n0, n0);
-      for (unsigned int row = 0; row < coarse.m(); ++row)
-        for (unsigned int j = coarse.row_begin(row); j < coarse.row_end(row);
-             ++j)
-          ops.coarse_matrix(coarse.global_column(row),
-                            coarse.global_column(coarse.column(j))) =
-            coarse.value(j);
-      if (Utilities::MPI::n_mpi_processes(communicator) > 1)
-        Utilities::MPI::sum(ops.coarse_matrix, communicator, ops.coarse_matrix);
-      ops.coarse.initialize(ops.coarse_matrix);
+      ops.coarse.initialize(ops.local_matrices[0],
+                            dof_handler.n_dofs(0),
+                            communicator);
     }
 
 

@@ -180,13 +180,26 @@ namespace rsfcycle
     }
 
 
+    namespace
+    {
+      /** The value of an optional function at x; none if it is not given. */
+      template <int dim>
+      std::optional<double>
+      value_if_given(const std::shared_ptr<const Function<dim>> &function,
+                     const Point<dim>                           &x)
+      {
+        if (!function)
+          return {};
+        return function->value(x);
+      }
+    } // namespace
+
+
     template <int dim>
     std::optional<double>
     FrictionField<dim>::normal_stress(const Point<dim> &x) const
     {
-      if (!f.normal_stress)
-        return {};
-      return f.normal_stress->value(x);
+      return value_if_given(f.normal_stress, x);
     }
 
 
@@ -194,9 +207,7 @@ namespace rsfcycle
     std::optional<double>
     FrictionField<dim>::shear_prestress(const Point<dim> &x) const
     {
-      if (!f.shear_prestress)
-        return {};
-      return f.shear_prestress->value(x);
+      return value_if_given(f.shear_prestress, x);
     }
 
 
@@ -204,9 +215,7 @@ namespace rsfcycle
     std::optional<double>
     FrictionField<dim>::radiation_damping(const Point<dim> &x) const
     {
-      if (!f.radiation_damping)
-        return {};
-      return f.radiation_damping->value(x);
+      return value_if_given(f.radiation_damping, x);
     }
 
 
@@ -251,21 +260,12 @@ namespace rsfcycle
           const double theta = f.initial_state->value(x);
           require(theta > 0, "Initial state", theta, "> 0");
         }
-      if (f.normal_stress)
-        {
-          const double sigma = f.normal_stress->value(x);
-          require(sigma > 0, "Normal stress", sigma, "> 0");
-        }
-      if (f.shear_prestress)
-        {
-          const double tau = f.shear_prestress->value(x);
-          require(true, "Shear prestress", tau, "finite");
-        }
-      if (f.radiation_damping)
-        {
-          const double eta = f.radiation_damping->value(x);
-          require(eta >= 0, "Radiation damping", eta, ">= 0");
-        }
+      if (const auto sigma = normal_stress(x))
+        require(*sigma > 0, "Normal stress", *sigma, "> 0");
+      if (const auto tau = shear_prestress(x))
+        require(true, "Shear prestress", *tau, "finite");
+      if (const auto eta = radiation_damping(x))
+        require(*eta >= 0, "Radiation damping", *eta, ">= 0");
     }
 
 

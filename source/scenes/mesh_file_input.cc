@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <limits>
 #include <rsfcycle/format.h>
+#include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/mesh_file_input.h>
 #include <set>
 #include <stdexcept>
@@ -147,5 +148,88 @@ namespace rsfcycle
       template Tensor<1, 3>
       parse_vector<3>(const std::string &, const std::string &);
     } // namespace mesh_file_input
-  }   // namespace scenes
+
+
+    /** The entries of `subsection Mesh file` (parsed by the constructor). */
+    template <int dim>
+    void
+    MeshFile<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection(mesh_file_input::section);
+      {
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
+                          "The gmsh mesh (.msh, format 2 or 4, ASCII; "
+                          "quadrilaterals in 2D, hexahedra in 3D) of Scene = "
+                          "mesh-file, relative to the working directory");
+        prm.declare_entry(
+          "Refine where",
+          "",
+          Patterns::Anything(),
+          "The part of the contact that the mesh is refined toward "
+          "(Mesh/Local refinements with the refinement law): where this "
+          "function of x, y (and z in 3D) [m] is > 0. Empty: where the "
+          "fault is rate weakening, b - a > 0");
+        prm.declare_entry(
+          "Boundary roles",
+          "",
+          Patterns::Anything(),
+          "The role of each physical boundary tag of the mesh, as 'tag: "
+          "role, tag: role'. Roles: contact (rate-and-state friction on a "
+          "rigid base, zero normal velocity; one plane), load (prescribed "
+          "velocity Load velocity), free (traction free), free-slip (zero "
+          "normal velocity; in 2D parallel to the contact, in 3D "
+          "perpendicular to it with one normal for all). Every boundary tag "
+          "of the mesh needs a role; faces without a physical tag have tag 0");
+        prm.declare_entry(
+          "Materials",
+          "",
+          Patterns::Anything(),
+          "The material of each physical volume tag of the mesh, as 'tag: "
+          "density 900, bulk modulus 5e4, Poisson ratio 0.3, shear "
+          "viscosity 1e3, bulk viscosity 1e3; tag: ...' (kg/m^3, Pa, -, "
+          "Pa s, Pa s). Every volume tag of the mesh needs one");
+        prm.declare_entry("Gravity",
+                          "0, -9.81",
+                          Patterns::List(Patterns::Double(), 2, 3),
+                          "Gravitational acceleration in the mesh's "
+                          "coordinates (2 or 3 components as the mesh) "
+                          "[m/s^2]; it loads the contact (normal stress) and "
+                          "defines 'up' for the observation points and the "
+                          "dip direction");
+        prm.declare_entry("Load velocity",
+                          "-50e-6, 0",
+                          Patterns::List(Patterns::Double(), 1, 3),
+                          "Velocity of the load boundaries in the mesh's "
+                          "coordinates (2 or 3 components as the mesh) [m/s], "
+                          "parallel to the contact; its magnitude is the "
+                          "plate rate v0 (event threshold, output). With "
+                          "Displacement = antiplane one number: the velocity "
+                          "out of the mesh's plane");
+        prm.declare_entry("Ramp time",
+                          "100",
+                          Patterns::Double(0),
+                          "t0 [s]: the load velocity rises as "
+                          "(1 - cos(pi t/t0))/2 times Load velocity until t0");
+        prm.declare_entry("Observation points",
+                          "",
+                          Patterns::Anything(),
+                          "Points of the body whose displacement along 'up' "
+                          "(minus Gravity) is recorded every step, as 'name: "
+                          "x, y; name: x, y' (3D: x, y, z) in the mesh's "
+                          "coordinates [m]; empty: none");
+        prm.enter_subsection("Friction");
+        FrictionField<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+    template void
+    MeshFile<2>::declare_parameters(ParameterHandler &);
+    template void
+    MeshFile<3>::declare_parameters(ParameterHandler &);
+  } // namespace scenes
 } // namespace rsfcycle

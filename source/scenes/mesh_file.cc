@@ -78,7 +78,7 @@ namespace rsfcycle
       prm.leave_subsection();
       prm.leave_subsection();
 
-      if (antiplane && !friction_field->normal_stress(Point<dim>()))
+      if (antiplane && !friction_field->functions().normal_stress)
         fail("Friction/Normal stress",
              ": must be given with Displacement = antiplane (in-plane "
              "gravity does not load the out-of-plane displacement)");
@@ -457,7 +457,7 @@ namespace rsfcycle
     std::function<double(const Point<dim> &)>
     MeshFile<dim>::normal_stress() const
     {
-      if (!friction_field->normal_stress(Point<dim>()))
+      if (!friction_field->functions().normal_stress)
         return {};
       return [this](const Point<dim> &p) {
         return *friction_field->normal_stress(to_physical(p));
@@ -469,7 +469,7 @@ namespace rsfcycle
     std::function<Tensor<1, dim>(const Point<dim> &)>
     MeshFile<dim>::shear_prestress() const
     {
-      if (!friction_field->shear_prestress(Point<dim>()))
+      if (!friction_field->functions().shear_prestress)
         return {};
       return [this](const Point<dim> &p) {
         return *friction_field->shear_prestress(to_physical(p)) * load_rotated /

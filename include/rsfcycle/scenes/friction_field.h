@@ -79,6 +79,13 @@ namespace rsfcycle
       double
       initial_alpha(const Point<dim> &x) const;
 
+      /** The functions (the optional ones are null when not given). */
+      const Functions &
+      functions() const
+      {
+        return f;
+      }
+
       /** The prescribed |sigma_n| at x; none: from gravity. */
       std::optional<double>
       normal_stress(const Point<dim> &x) const;

@@ -390,6 +390,7 @@ namespace rsfcycle
       "Write checkpoint.bin every this many minutes of wall-clock time as "
       "well (0: never) [min]; it is also written at the end, on "
       "SIGINT/SIGTERM and when the step size underflows");
+    output::SeasParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -408,6 +409,7 @@ namespace rsfcycle
     transition_events      = prm.get_integer("Transition events");
     checkpoint_steps       = prm.get_integer("Checkpoint steps");
     checkpoint_minutes     = prm.get_double("Checkpoint minutes");
+    seas.parse_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -462,5 +464,6 @@ namespace rsfcycle
                                   format_number(output.event_output_interval) +
                                   ": must not exceed Output interval = " +
                                   format_number(output.output_interval));
+    output.seas.validate(run.dimension);
   }
 } // namespace rsfcycle

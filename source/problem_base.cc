@@ -373,17 +373,22 @@ namespace rsfcycle
   ProblemBase<dim>::layout() const
   {
     time::Layout        layout;
-    std::vector<double> s, z;
+    std::vector<double> s, z, w;
     for (const auto &node : contact.nodes())
       {
         s.push_back(scene.along_base_coordinate(node.position));
         z.push_back(node.position[dim - 1]);
+        w.push_back(node.weight);
       }
     layout.positions = contact.gather(s);
+    layout.weights   = contact.gather(w);
     if (dim == 3)
       layout.lateral_positions = contact.gather(z);
     for (const auto &point : scene.observation_points())
-      layout.observation_names.push_back(point.first + "_m");
+      {
+        layout.observation_names.push_back(point.first + "_m");
+        layout.station_names.push_back(point.first);
+      }
     layout.convergence_rate = scene.convergence_rate();
     // event times and slips as accurate as the solution, not quantised by
     // the onset step (which also makes them independent of the number of
@@ -402,6 +407,27 @@ namespace rsfcycle
     sample.slip = contact.gather(contact.tangential_displacement(state.u));
     sample.observations = observed_uplift(state.u);
     sample.statistics   = state.statistics;
+    if (parameters.output.seas.enabled())
+      {
+        // the friction stress |sigma_n| mu(V, alpha) + C of the accepted
+        // state, and log10 theta = (alpha + ln(L / V*)) / ln 10
+        const std::vector<double> rates = contact.slip_rates(state.v);
+        std::vector<double>       stresses, log10_states;
+        const auto               &nodes = contact.nodes();
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            const auto &p = nodes[k].params;
+            stresses.push_back(
+              nodes[k].normal_force / nodes[k].weight *
+                friction::friction_coefficient(p, state.alpha[k], rates[k]) +
+              (rates[k] > 0 ? p.cohesion : 0.));
+            log10_states.push_back((state.alpha[k] + std::log(p.L / p.v_star)) /
+                                   std::log(10.));
+          }
+        sample.shear_stresses    = contact.gather(stresses);
+        sample.log10_states      = contact.gather(log10_states);
+        sample.observation_rates = observed_uplift(state.v);
+      }
     return sample;
   }
 

@@ -142,7 +142,7 @@ main()
   damaged("header", bytes);
   damaged("appended", good + "x");
   bytes    = good;
-  bytes[8] = 2; // format version
+  bytes[8] = rsfcycle::output::checkpoint_format + 1; // another format
   damaged("format", bytes);
   damaged("not a checkpoint", "time_s,step_size_s\n1,2\n");
   {

@@ -2,6 +2,7 @@
 #define rsfcycle_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <rsfcycle/output/seas_parameters.h>
 #include <rsfcycle/time/theta_scheme.h>
 #include <string>
 
@@ -115,6 +116,8 @@ namespace rsfcycle
     unsigned int transition_events      = 2;
     unsigned int checkpoint_steps       = 5000;
     double       checkpoint_minutes     = 10;
+    /** The subsection Output/SEAS. */
+    output::SeasParameters seas;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -105,6 +105,33 @@ namespace rsfcycle
 
 
     void
+    cut_to_sizes(const std::vector<std::string> &paths,
+                 const std::vector<long long>   &sizes)
+    {
+      for (unsigned int i = 0; i < paths.size(); ++i)
+        {
+          std::error_code error;
+          const auto      size = std::filesystem::file_size(paths[i], error);
+          if (error)
+            throw std::invalid_argument(paths[i] + ": " + error.message());
+          if (size < static_cast<std::uintmax_t>(sizes[i]))
+            throw std::invalid_argument(
+              paths[i] + ": " + std::to_string(size) +
+              " bytes, shorter than the " + std::to_string(sizes[i]) +
+              " bytes the checkpoint recorded: the file was cut after the "
+              "checkpoint was written");
+        }
+      for (unsigned int i = 0; i < paths.size(); ++i)
+        {
+          std::error_code error;
+          std::filesystem::resize_file(paths[i], sizes[i], error);
+          if (error)
+            throw std::runtime_error(paths[i] + ": " + error.message());
+        }
+    }
+
+
+    void
     write_parameters(const std::string              &dir,
                      const dealii::ParameterHandler &prm)
     {

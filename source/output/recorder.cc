@@ -9,10 +9,11 @@ namespace rsfcycle
 {
   namespace output
   {
-    Recorder::Recorder(const std::string  &dir,
-                       const time::Layout &layout,
-                       const bool          resume,
-                       const FileSizes    &sizes)
+    Recorder::Recorder(const std::string    &dir,
+                       const time::Layout   &layout,
+                       const bool            resume,
+                       const FileSizes      &sizes,
+                       const SeasParameters &seas_parameters)
     {
       // Node order of the profile: along the base, then (3D) by z.
       const auto        &s = layout.positions;
@@ -26,48 +27,46 @@ namespace rsfcycle
           return s[i] < s[j];
         return !z.empty() && z[i] < z[j];
       });
+      // on every rank: its refusals (stations off the contact) are alike
+      if (seas_parameters.enabled())
+        seas = std::make_unique<SeasFiles>(dir, seas_parameters, layout);
 
       // the first rank writes; the others keep the interface
       if (!writing)
         return;
-      paths                         = {{dir + "/time-series.csv",
-                                        dir + "/base-profile.csv",
-                                        dir + "/events.csv"}};
-      std::ofstream *const files[3] = {&series, &profile, &catalogue};
+      paths = {{dir + "/time-series.csv",
+                dir + "/base-profile.csv",
+                dir + "/events.csv"}};
       if (resume)
         {
           // drop what was written after the checkpoint, then append; first
-          // check all three, so that a refusal changes nothing
-          const long long kept[3] = {sizes.series,
-                                     sizes.profile,
-                                     sizes.catalogue};
-          for (unsigned int i = 0; i < 3; ++i)
+          // check all files, so that a refusal changes nothing
+          std::vector<std::string> all(paths.begin(), paths.end());
+          std::vector<long long>   kept = {sizes.series,
+                                           sizes.profile,
+                                           sizes.catalogue};
+          if (seas)
             {
-              std::error_code error;
-              const auto size = std::filesystem::file_size(paths[i], error);
-              if (error)
-                throw std::invalid_argument(paths[i] + ": " + error.message());
-              if (size < static_cast<std::uintmax_t>(kept[i]))
+              if (sizes.seas.size() != seas->paths().size())
                 throw std::invalid_argument(
-                  paths[i] + ": " + std::to_string(size) +
-                  " bytes, shorter than the " + std::to_string(kept[i]) +
-                  " bytes the checkpoint recorded: the file was cut after "
-                  "the checkpoint was written");
+                  dir + "/checkpoint.bin: recorded " +
+                  std::to_string(sizes.seas.size()) + " SEAS files, " +
+                  "Output/SEAS of parameters.prm asks for " +
+                  std::to_string(seas->paths().size()));
+              all.insert(all.end(), seas->paths().begin(), seas->paths().end());
+              kept.insert(kept.end(), sizes.seas.begin(), sizes.seas.end());
             }
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              std::error_code error;
-              std::filesystem::resize_file(paths[i], kept[i], error);
-              if (error)
-                throw std::runtime_error(paths[i] + ": " + error.message());
-            }
+          cut_to_sizes(all, kept);
         }
+      std::ofstream *const files[3] = {&series, &profile, &catalogue};
       for (unsigned int i = 0; i < 3; ++i)
         {
           files[i]->open(paths[i], resume ? std::ios::app : std::ios::out);
           if (!*files[i])
             throw file_error(paths[i], errno);
         }
+      if (seas)
+        seas->open(resume);
       if (!resume)
         {
           write_headers(layout);
@@ -129,6 +128,16 @@ namespace rsfcycle
       series_row << work.tnnmg_iterations << work.linear_iterations;
       series_row.write_line(series);
       check();
+      if (seas)
+        seas->write_step(t, sample);
+    }
+
+
+    void
+    Recorder::write_seas_profile(const double t, const time::Sample &sample)
+    {
+      if (writing && seas)
+        seas->write_profile(t, sample);
     }
 
 
@@ -165,6 +174,8 @@ namespace rsfcycle
       profile.flush();
       catalogue.flush();
       check();
+      if (seas)
+        seas->flush();
     }
 
 
@@ -180,6 +191,12 @@ namespace rsfcycle
       sizes.series    = series.tellp();
       sizes.profile   = profile.tellp();
       sizes.catalogue = catalogue.tellp();
+      if (seas)
+        {
+          sizes.seas = seas->sizes();
+          for (const auto &path : seas->paths())
+            sync_to_disk(path);
+        }
       return sizes;
     }
 

@@ -273,6 +273,7 @@ namespace rsfcycle
     {
       time::Layout layout;
       layout.positions               = {0.};
+      layout.weights                 = {1.}; // per unit area
       layout.observation_names       = {"slip_m",
                                         "slip_rate_m_per_s",
                                         "state_alpha",
@@ -294,6 +295,10 @@ namespace rsfcycle
                                                   s.alpha,
                                                   friction_coefficient(s)};
       sample.statistics.fixed_point_iterations = s.fixed_point_iterations;
+      sample.shear_stresses = {normal_stress * friction_coefficient(s) +
+                               (s.velocity != 0 ? cohesion : 0.)};
+      sample.log10_states   = {
+          (s.alpha + std::log(friction.L / friction.v_star)) / std::log(10.)};
       return sample;
     }
 

@@ -8,6 +8,7 @@
 // Scene = spring-slider: a digest of the spring-slider run instead (event
 // count, recurrence time, slip per cycle / (v0 T), peak log10(V/v0), final
 // state against steady sliding), see run_spring_slider().
+// With Output/SEAS on, also a digest of the SEAS files (digest_seas()).
 // Under mpirun (NAME.mpirun=N.output) every rank runs and the first writes
 // the digest.
 #include <cmath>
@@ -42,6 +43,80 @@ namespace
         rows.push_back(row);
       }
     return rows;
+  }
+
+  /** The numeric rows of a SEAS file (header and names line skipped). */
+  std::vector<std::vector<double>>
+  read_seas(const std::string &file)
+  {
+    std::ifstream                    in(file);
+    std::string                      line;
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line))
+      {
+        if (line.empty() || line[0] == '#' || std::isalpha(line[0]))
+          continue;
+        std::vector<double> row;
+        std::stringstream   s(line);
+        double              value;
+        while (s >> value)
+          row.push_back(value);
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  /**
+   * The SEAS files: rows and last row of each station file (slips and
+   * displacements in um, rates as log10 or over v0, stresses in MPa),
+   * the peak of global.dat's max slip rate, slip.dat's rows and the
+   * slips of its last row at the first, middle and last position [um].
+   */
+  void
+  digest_seas(const rsfcycle::Parameters     &parameters,
+              const double                    v0,
+              const std::vector<std::string> &surface_stations,
+              std::ostream                   &out)
+  {
+    const std::string dir = parameters.run.output_directory + "/";
+    out << "SEAS fault stations: rows; last t [s], slip [um], log10 V, "
+           "shear stress [MPa], log10 theta\n";
+    for (const double x : parameters.output.seas.fault_stations)
+      {
+        std::ostringstream name;
+        name << "fltst_dp" << std::setfill('0') << std::setw(3)
+             << std::lround(x / 100);
+        const auto rows = read_seas(dir + name.str());
+        const auto last = rows.back();
+        out << name.str() << " " << rows.size() << "; " << last[0] << " "
+            << last[1] * 1e6 << " " << last[2] << " " << last[3] << " "
+            << last[4] << "\n";
+      }
+    out << "SEAS surface stations: rows; last t [s], disp [um], vel / v0\n";
+    for (const auto &name : surface_stations)
+      {
+        const auto rows = read_seas(dir + "srfst_" + name);
+        const auto last = rows.back();
+        out << "srfst_" << name << " " << rows.size() << "; " << last[0] << " "
+            << last[1] * 1e6 << " " << last[2] / v0 << "\n";
+      }
+    const auto  global = read_seas(dir + "global.dat");
+    std::size_t peak   = 0;
+    for (std::size_t r = 0; r < global.size(); ++r)
+      if (global[r][1] > global[peak][1])
+        peak = r;
+    out << "global.dat rows " << global.size() << "; peak log10 max V "
+        << global[peak][1] << " at t = " << global[peak][0]
+        << " s; last moment rate [N/s] " << global.back()[2] << "\n";
+    const auto        profiles = read_seas(dir + "slip.dat");
+    const auto       &x        = profiles.front();
+    const auto       &last     = profiles.back();
+    const std::size_t n        = x.size();
+    out << "slip.dat: " << profiles.size() - 1 << " profiles of " << n - 2
+        << " positions; last t = " << last[0] << " s, log10 max V " << last[1]
+        << ", slip [um] at " << x[2] << " / " << x[n / 2 + 1] << " / "
+        << x[n - 1] << " m: " << last[2] * 1e6 << " / " << last[n / 2 + 1] * 1e6
+        << " / " << last[n - 1] * 1e6 << "\n";
   }
 
   template <int dim>
@@ -134,6 +209,14 @@ namespace
           }
         out << "fault.pvd records: " << n_records
             << ", files present: " << n_present << "\n";
+      }
+
+    if (parameters.output.seas.enabled())
+      {
+        std::vector<std::string> names;
+        for (const auto &point : scene->observation_points())
+          names.push_back(point.first);
+        digest_seas(parameters, v0, names, out);
       }
   }
 

@@ -2,8 +2,8 @@
 # Kill-and-resume test (issue 6): a short coarse wedge run is killed with
 # SIGKILL after it has written a checkpoint, resumed with --resume, and its
 # run folder compared with that of an uninterrupted run. Expected: bitwise
-# identical time-series.csv, base-profile.csv, events.csv and final
-# checkpoint.bin (state vectors, counters, event detector, step controller
+# identical time-series.csv, base-profile.csv, events.csv, the SEAS files
+# (wedge) and final checkpoint.bin (state vectors, counters, event detector, step controller
 # with its cached candidate step): the computation is deterministic and the
 # checkpoint holds everything the time loop carries. Also checks that
 # SIGINT stops a run with exit code 130 and a resumable folder. The same
@@ -26,6 +26,14 @@ end
 subsection Output
   set Write VTU        = false
   set Checkpoint steps = 20
+  # the SEAS files are cut and appended on resume like the CSV files
+  subsection SEAS
+    set Problem        = kill-resume test
+    set Fault stations = 0.3
+    set Slip profile   = 0.1, 0.6, 0.05
+    set Slip profile interval = 5
+    set Shear modulus  = 1e5
+  end
 end
 PRM
 }
@@ -68,13 +76,15 @@ check_resume() { # label, prm maker
   for r in $a $b $c; do $2 $r; done
 
   "$exe" $a.prm > $a.log 2>&1 || fail "uninterrupted run"
+  # the SEAS files of the run, if any
+  seas=$(cd $a && ls fltst_* srfst_* global.dat slip.dat 2>/dev/null)
 
   start_and_wait $b
   kill -9 $pid 2>/dev/null || fail "run b ended before it could be killed"
   wait $pid 2>/dev/null
   lines_killed=$(wc -l < $b/time-series.csv)
   "$exe" --resume $b > $b-2.log 2>&1 || fail "resume after SIGKILL"
-  for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
+  for f in time-series.csv base-profile.csv events.csv checkpoint.bin $seas; do
     cmp -s $a/$f $b/$f || fail "$f differs after SIGKILL + resume"
   done
   echo "$1: SIGKILL at $lines_killed rows of time-series.csv, resumed: identical"
@@ -85,7 +95,7 @@ check_resume() { # label, prm maker
   [ $status -eq 130 ] || fail "SIGINT exit status $status, expected 130"
   grep -q "Continue with: rsfcycle --resume" $c.log || fail "no resume hint"
   "$exe" --resume $c > $c-2.log 2>&1 || fail "resume after SIGINT"
-  for f in time-series.csv base-profile.csv events.csv checkpoint.bin; do
+  for f in time-series.csv base-profile.csv events.csv checkpoint.bin $seas; do
     cmp -s $a/$f $c/$f || fail "$f differs after SIGINT + resume"
   done
   echo "$1: SIGINT: exit 130, resumed: identical"

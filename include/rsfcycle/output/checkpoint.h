@@ -17,7 +17,7 @@ namespace rsfcycle
      * LoopState, the controller memory, a model's save_output): a
      * checkpoint of another format is refused on resume, never misread.
      */
-    constexpr std::uint32_t checkpoint_format = 1;
+    constexpr std::uint32_t checkpoint_format = 2;
 
     /**
      * What a checkpoint was written for, given by the model: its scene, the

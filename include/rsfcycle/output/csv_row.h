@@ -20,9 +20,13 @@ namespace rsfcycle
     class CsvRow
     {
     public:
-      /** Start a row whose real numbers have `precision` significant digits. */
-      explicit CsvRow(const int precision)
+      /**
+       * Start a row whose real numbers have `precision` significant digits,
+       * separated by `separator` (a comma; a space in the SEAS files).
+       */
+      explicit CsvRow(const int precision, const char separator = ',')
         : precision(precision)
+        , separator(separator)
       {}
 
       /** Forget the last row. */
@@ -80,10 +84,11 @@ namespace rsfcycle
       separate()
       {
         if (!buffer.empty())
-          buffer.push_back(',');
+          buffer.push_back(separator);
       }
 
       const int   precision;
+      const char  separator;
       std::string buffer;
     };
   } // namespace output

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rsfcycle
 {
@@ -62,6 +63,16 @@ namespace rsfcycle
      */
     void
     sync_to_disk(const std::string &path);
+
+    /**
+     * Cut each file paths[i] to sizes[i] bytes (resume: drop what was
+     * written after the checkpoint). All are checked first: a file shorter
+     * than its size (cut after the checkpoint was written) or missing is a
+     * std::invalid_argument, thrown before any file is changed.
+     */
+    void
+    cut_to_sizes(const std::vector<std::string> &paths,
+                 const std::vector<long long>   &sizes);
 
     /**
      * Create the run folder `dir` if needed and write every parameter of

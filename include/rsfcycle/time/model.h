@@ -33,7 +33,10 @@ namespace rsfcycle
      * What the run loop records of one accepted state: the slip rate and the
      * tangential displacement (up to two components) of every contact node,
      * the model's own time-series columns, and the solver counts of the
-     * step that produced the state.
+     * step that produced the state. The SEAS files (output::SeasFiles) also
+     * need the friction stress and the state of every node and the rates
+     * of the observation points: a model fills them when the SEAS files
+     * are on (`Output/SEAS/Problem` given); else they may stay empty.
      */
     struct Sample
     {
@@ -41,6 +44,12 @@ namespace rsfcycle
       std::vector<std::array<double, 2>> slip;         // [m]
       std::vector<double>                observations; // see Layout
       StepStatistics                     statistics;
+      /** The friction stress |sigma_n| mu(V, alpha) + C of every node [Pa]. */
+      std::vector<double> shear_stresses;
+      /** log10 of the state theta = L / V* exp(alpha) of every node [s]. */
+      std::vector<double> log10_states;
+      /** The time derivatives of the observations (body models). */
+      std::vector<double> observation_rates;
     };
 
     /**
@@ -50,13 +59,18 @@ namespace rsfcycle
      * observation columns of time-series.csv, the convergence rate v0 that
      * scales the event threshold, and how event times are found (at the
      * accepted step, or interpolated in log V between two steps; see
-     * output::EventDetector).
+     * output::EventDetector); for the SEAS files, the nodes' lumped
+     * quadrature weights (length or area of the contact each stands for)
+     * and the names of the observation points whose displacement and rate
+     * make surface-station files (none for the spring-slider).
      */
     struct Layout
     {
       std::vector<double>      positions;
       std::vector<double>      lateral_positions;
       std::vector<std::string> observation_names;
+      std::vector<double>      weights;
+      std::vector<std::string> station_names;
       double                   convergence_rate        = 1;
       bool                     interpolate_event_times = false;
     };

@@ -89,6 +89,7 @@ namespace rsfcycle
         unsigned long           total_problems  = 0;
         double                  min_dt = 1e300, max_dt = 0;
         double                  last_output = 0, last_profile = 0;
+        double                  last_seas_profile = 0;
         output::EventDetector   events;
         output::FileSizes       file_sizes;
 
@@ -97,7 +98,8 @@ namespace rsfcycle
         serialize(Archive &ar, const unsigned int)
         {
           ar &state &t &controller &step &max_fixed_point &total_problems
-            &min_dt &max_dt &last_output &last_profile &events &file_sizes;
+            &min_dt &max_dt &last_output &last_profile &last_seas_profile
+              &events &file_sizes;
         }
       };
 

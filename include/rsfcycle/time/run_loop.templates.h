@@ -115,8 +115,8 @@ namespace rsfcycle
       // record files) is checked before the first byte is written to it.
       if (resume)
         read_checkpoint();
-      recorder =
-        std::make_unique<output::Recorder>(dir, layout, resume, s.file_sizes);
+      recorder = std::make_unique<output::Recorder>(
+        dir, layout, resume, s.file_sizes, parameters.output.seas);
       model.describe(log);
       if (resume)
         {
@@ -130,6 +130,7 @@ namespace rsfcycle
           const Sample sample = model.sample(s.state);
           if (parameters.output.write_vtu && model.writes_snapshots())
             model.write_snapshot(s.state, s.t);
+          // (no SEAS rows: the initial state has no slip rate yet)
           recorder->write_profile(s.t, sample.slip_rates);
           s.events.update(0., sample.slip_rates, sample.slip);
         }
@@ -319,6 +320,18 @@ namespace rsfcycle
         {
           recorder->write_profile(s.t, sample.slip_rates);
           s.last_profile = s.t;
+        }
+      // the SEAS slip profiles: at their own intervals, by the event
+      // detector's definition of an event
+      const auto &seas = out.seas;
+      if (recorder->writes_seas() &&
+          s.t >=
+            s.last_seas_profile +
+              (in_event ? seas.event_profile_interval : seas.profile_interval) -
+              eps)
+        {
+          recorder->write_seas_profile(s.t, sample);
+          s.last_seas_profile = s.t;
         }
       if (out.write_vtu && model.writes_snapshots() &&
           s.t >=

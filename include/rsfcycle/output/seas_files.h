@@ -1,0 +1,125 @@
+#ifndef rsfcycle_output_seas_files_h
+#define rsfcycle_output_seas_files_h
+
+#include <array>
+#include <fstream>
+#include <memory>
+#include <rsfcycle/output/csv_row.h>
+#include <rsfcycle/output/seas_parameters.h>
+#include <rsfcycle/time/model.h>
+#include <string>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    /**
+     * The plain-text files of the SCEC SEAS benchmarks (Erickson et al.
+     * 2020, Seismol. Res. Lett. 91, 874; the BP1-QD description), written
+     * by the first rank into the run folder, for a 2D model (a 1D fault):
+     *  - fltst_dpXXX, one per fault station at the along-contact position
+     *    XXX x 100 m: t slip slip_rate shear_stress state (s, m, log10 m/s,
+     *    MPa, log10 s), every accepted step, linear between the two nodes
+     *    around the station;
+     *  - srfst_NAME, one per observation point NAME: t disp vel (m, m/s);
+     *  - global.dat: t max_slip_rate moment_rate (s, log10 m/s, N/s per
+     *    metre along strike: G int V ds with the entry Shear modulus);
+     *  - slip.dat: a row of positions (after two zeros), then t,
+     *    max_slip_rate and the slip at those positions, at the entries'
+     *    intervals (the run loop says when).
+     * With `Mirror model` (one side of a fault between two equal bodies
+     * computed against a rigid mirror, the SEAS symmetric reduction), the
+     * surface stations report the benchmark's side x > 0: half of the
+     * model's displacement and rate.
+     */
+    class SeasFiles
+    {
+    public:
+      /**
+       * Throws std::invalid_argument (one line, naming the entry) if a
+       * station or the profile lies outside the contact or the model is
+       * 3D; nothing is written (open() creates or appends to the files).
+       */
+      SeasFiles(const std::string    &dir,
+                const SeasParameters &parameters,
+                const time::Layout   &layout);
+
+      /** The files' paths, in the order of sizes(). */
+      const std::vector<std::string> &
+      paths() const
+      {
+        return file_paths;
+      }
+
+      /**
+       * Create the files with their headers or, with `resume`, open them
+       * for appending (the Recorder has cut them to their checkpoint sizes).
+       */
+      void
+      open(bool resume);
+
+      /** The station and global rows of an accepted step. */
+      void
+      write_step(double t, const time::Sample &sample);
+
+      /** One row of slip.dat. */
+      void
+      write_profile(double t, const time::Sample &sample);
+
+      /** Flush every file; throws file_error if one failed. */
+      void
+      flush();
+
+      /** The files' sizes (after flush()). */
+      std::vector<long long>
+      sizes();
+
+    private:
+      /** A value at a position: nodes k and k + 1 with weights. */
+      struct Interpolation
+      {
+        unsigned int k      = 0;
+        double       weight = 0; // of node k + 1
+      };
+
+      Interpolation
+      locate(double position, const std::string &entry) const;
+
+      double
+      interpolate(const Interpolation &where, const double *values) const;
+
+      void
+      write_headers();
+
+      /**
+       * Sort the sample's node values by position (slip, rates, stress,
+       * state); returns log10 of the maximum slip rate.
+       */
+      double
+      sort_sample(const time::Sample &sample);
+
+      /** Throw file_error if a file failed (after a write). */
+      void
+      check() const;
+
+      std::string
+      header(const std::string &location) const;
+
+      const SeasParameters       parameters;
+      std::vector<unsigned int>  order;     // nodes by position
+      std::vector<double>        positions; // sorted
+      std::vector<double>        weights;   // sorted like positions
+      std::vector<Interpolation> stations, profile;
+      std::vector<double>        profile_positions;
+      std::vector<std::string>   station_names, surface_names;
+      double                     element_size = 0;
+      std::vector<std::string>   file_paths;
+      std::vector<std::unique_ptr<std::ofstream>> files;
+      CsvRow                                      row{10, ' '};
+      std::vector<double> slip, rate, log10_rate, stress, log10_state; // sorted
+    };
+  } // namespace output
+} // namespace rsfcycle
+
+#endif

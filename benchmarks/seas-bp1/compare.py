@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+"""Compare SEAS BP1-QD runs of rsfcycle with a peer run (QDYN).
+
+Usage:
+  compare.py --rsfcycle LABEL=RUNDIR [...] [--qdyn LABEL=SERIES.csv [...]]
+             [--out DIR]
+
+RUNDIR: an rsfcycle run folder with the SEAS files (prm/seas-bp1-qd.prm
+writes them): global.dat (t, log10 max V) and fltst_dp000 (t, surface
+slip). SERIES.csv: the peer's time series with the columns t_s (or t_yr in
+QDYN's 365-day years), max_slip_rate [m/s] and surface_slip [m].
+
+Both are reduced alike: an event is where the maximum slip rate exceeds
+1 mm/s (the SEAS threshold), from the first sample above to the first
+below; per event the start time, the peak slip rate and the coseismic
+surface slip (the surface slip at the end minus at the start). Printed:
+first-event time, mean recurrence interval (of the events after the
+first `--skip` ones), median peak slip rate and surface slip, each with
+its difference from the first peer run (or from the first run given).
+Writes DIR/max-slip-rate.png (log10 max V over time) and
+DIR/surface-slip.png (surface slip over time).
+"""
+import argparse
+import os
+
+import numpy as np
+
+YEAR = 365.25 * 24 * 3600  # rsfcycle's year [s]
+QDYN_YEAR = 365.0 * 24 * 3600  # QDYN's (constants.f90)
+THRESHOLD = 1e-3  # [m/s]
+
+
+def read_seas(path):
+    """The numeric rows of a SEAS file (header and names line skipped)."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if not line.strip() or line[0] == "#" or line[0].isalpha():
+                continue
+            rows.append([float(x) for x in line.split()])
+    return np.array(rows)
+
+
+def rsfcycle_series(rundir):
+    g = read_seas(os.path.join(rundir, "global.dat"))
+    s = read_seas(os.path.join(rundir, "fltst_dp000"))
+    n = min(len(g), len(s))
+    return g[:n, 0], 10 ** g[:n, 1], s[:n, 1]
+
+
+def peer_series(path):
+    import csv
+
+    with open(path) as f:
+        reader = csv.DictReader(f)
+        rows = list(reader)
+    if "t_s" in rows[0]:
+        t = np.array([float(r["t_s"]) for r in rows])
+    else:
+        t = np.array([float(r["t_yr"]) for r in rows]) * QDYN_YEAR
+    v = np.array([float(r["max_slip_rate"]) for r in rows])
+    slip = np.array([float(r["surface_slip"]) for r in rows])
+    return t, v, slip
+
+
+def events(t, v, slip):
+    """(start [s], peak [m/s], surface slip [m]) of every completed event."""
+    above = v > THRESHOLD
+    result = []
+    i = 0
+    n = len(t)
+    while i < n:
+        if above[i]:
+            j = i
+            while j < n and above[j]:
+                j += 1
+            if j == n:
+                break  # still running at the end
+            start = i - 1 if i > 0 else i
+            result.append((t[i], v[i:j].max(), slip[j] - slip[start]))
+            i = j
+        else:
+            i += 1
+    return np.array(result)
+
+
+def summary(label, ev, t_end, skip):
+    first = ev[0, 0] / YEAR
+    recurrence = np.diff(ev[:, 0])[skip:] / YEAR if len(ev) > skip + 1 else []
+    return {
+        "label": label,
+        "events": len(ev),
+        "end": t_end / YEAR,
+        "first": first,
+        "recurrence": np.mean(recurrence) if len(recurrence) else np.nan,
+        "recurrence_spread": (np.ptp(recurrence) if len(recurrence) else np.nan),
+        "peak": np.median(ev[skip:, 1]) if len(ev) > skip else ev[0, 1],
+        "slip": np.median(ev[skip:, 2]) if len(ev) > skip else ev[0, 2],
+        "first_peak": ev[0, 1],
+        "first_slip": ev[0, 2],
+    }
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--rsfcycle", action="append", default=[])
+    parser.add_argument("--qdyn", action="append", default=[])
+    parser.add_argument("--skip", type=int, default=2,
+                        help="events left out of the means (spin-up)")
+    parser.add_argument("--out", default=".")
+    args = parser.parse_args()
+
+    runs = []
+    for item in args.qdyn:
+        label, path = item.split("=", 1)
+        runs.append((label, *peer_series(path)))
+    for item in args.rsfcycle:
+        label, path = item.split("=", 1)
+        runs.append((label, *rsfcycle_series(path)))
+
+    rows = [summary(r[0], events(*r[1:]), r[1][-1], args.skip) for r in runs]
+    ref = rows[0]
+    print("| run | simulated [yr] | events | first event [yr] | mean recurrence "
+          "[yr] (spread) | first: peak V [m/s], surface slip [m] | median "
+          "peak V [m/s] | median surface slip [m] |")
+    print("|---|---|---|---|---|---|---|---|")
+
+    def diff(x, y):
+        return "" if x is y else " (%+.2f %%)" % (100 * (x / y - 1))
+
+    for r in rows:
+        print("| %s | %.0f | %d | %.2f%s | %.2f (%.2f)%s | %.2f, %.3f | %.2f%s "
+              "| %.3f%s |" % (
+                  r["label"], r["end"], r["events"], r["first"],
+                  diff(r["first"], ref["first"]), r["recurrence"],
+                  r["recurrence_spread"],
+                  diff(r["recurrence"], ref["recurrence"]), r["first_peak"],
+                  r["first_slip"], r["peak"], diff(r["peak"], ref["peak"]),
+                  r["slip"], diff(r["slip"], ref["slip"])))
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    os.makedirs(args.out, exist_ok=True)
+    for name, column, ylabel in (
+            ("max-slip-rate.png", 2, "log10 max slip rate [m/s]"),
+            ("surface-slip.png", 3, "surface slip [m]")):
+        fig, ax = plt.subplots(figsize=(9, 4))
+        for r in runs:
+            y = np.log10(r[column]) if column == 2 else r[column]
+            ax.plot(r[1] / YEAR, y, lw=0.8, label=r[0])
+        ax.set_xlabel("time [yr]")
+        ax.set_ylabel(ylabel)
+        ax.legend()
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, name), dpi=120)
+        plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()

@@ -8,8 +8,8 @@
 // frictional part, so that k refinements give 1600 / 2^k m), growing by
 // 1.3 per cell away from it (L = 400 km, about 17 cells).
 // Regenerate: gmsh -2 -format msh2 -o seas-bp1.msh seas-bp1.geo
-// (prm/meshes/seas-bp1-half.geo is the same with L = 200 km, for the
-// domain-size check.)
+// Other domain sizes (the domain-size check in doc/seas-bp1.md):
+// gmsh -2 -format msh2 -setnumber L 200e3 -o seas-bp1-200km.msh seas-bp1.geo
 If (!Exists(L))
   L = 400e3;
 EndIf

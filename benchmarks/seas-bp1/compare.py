@@ -16,7 +16,8 @@ below; per event the start time, the peak slip rate and the coseismic
 surface slip (the surface slip at the end minus at the start). Printed:
 first-event time, mean recurrence interval (of the events after the
 first `--skip` ones), median peak slip rate and surface slip, each with
-its difference from the first peer run (or from the first run given).
+its difference from the first peer run (or from the first run given), and
+the first `--events` events one by one against that run's.
 Writes DIR/max-slip-rate.png (log10 max V over time) and
 DIR/surface-slip.png (surface slip over time).
 """
@@ -107,6 +108,8 @@ def main():
     parser.add_argument("--qdyn", action="append", default=[])
     parser.add_argument("--skip", type=int, default=2,
                         help="events left out of the means (spin-up)")
+    parser.add_argument("--events", type=int, default=6,
+                        help="events compared one by one")
     parser.add_argument("--out", default=".")
     args = parser.parse_args()
 
@@ -126,7 +129,9 @@ def main():
     print("|---|---|---|---|---|---|---|---|")
 
     def diff(x, y):
-        return "" if x is y else " (%+.2f %%)" % (100 * (x / y - 1))
+        if x is y or y is None or x == y:
+            return ""
+        return " (%+.2f %%)" % (100 * (x / y - 1))
 
     for r in rows:
         print("| %s | %.0f | %d | %.2f%s | %.2f (%.2f)%s | %.2f, %.3f | %.2f%s "
@@ -137,6 +142,26 @@ def main():
                   diff(r["recurrence"], ref["recurrence"]), r["first_peak"],
                   r["first_slip"], r["peak"], diff(r["peak"], ref["peak"]),
                   r["slip"], diff(r["slip"], ref["slip"])))
+
+    # event by event against the reference (the first run given)
+    ref_events = events(*runs[0][1:])
+    print()
+    print("| run | event | start [yr] | interval [yr] | peak V [m/s] | "
+          "surface slip [m] |")
+    print("|---|---|---|---|---|---|")
+    for r in runs:
+        ev = events(*r[1:])
+        for k in range(min(len(ev), len(ref_events), args.events)):
+            interval = (ev[k, 0] - ev[k - 1, 0]) / YEAR if k > 0 else None
+            ref_interval = ((ref_events[k, 0] - ref_events[k - 1, 0]) / YEAR
+                            if k > 0 else None)
+            print("| %s | %d | %.3f%s | %s | %.3f%s | %.4f%s |" % (
+                r[0], k + 1, ev[k, 0] / YEAR,
+                diff(ev[k, 0], ref_events[k, 0]),
+                "-" if interval is None else "%.3f%s" % (
+                    interval, diff(interval, ref_interval)),
+                ev[k, 1], diff(ev[k, 1], ref_events[k, 1]), ev[k, 2],
+                diff(ev[k, 2], ref_events[k, 2])))
 
     import matplotlib
 

@@ -25,26 +25,15 @@ import argparse
 import os
 
 import numpy as np
+from seas_files import YEAR, read_table
 
-YEAR = 365.25 * 24 * 3600  # rsfcycle's year [s]
 QDYN_YEAR = 365.0 * 24 * 3600  # QDYN's (constants.f90)
 THRESHOLD = 1e-3  # [m/s]
 
 
-def read_seas(path):
-    """The numeric rows of a SEAS file (header and names line skipped)."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if not line.strip() or line[0] == "#" or line[0].isalpha():
-                continue
-            rows.append([float(x) for x in line.split()])
-    return np.array(rows)
-
-
 def rsfcycle_series(rundir):
-    g = read_seas(os.path.join(rundir, "global.dat"))
-    s = read_seas(os.path.join(rundir, "fltst_dp000"))
+    g = read_table(os.path.join(rundir, "global.dat"))
+    s = read_table(os.path.join(rundir, "fltst_dp000"))
     n = min(len(g), len(s))
     return g[:n, 0], 10 ** g[:n, 1], s[:n, 1]
 

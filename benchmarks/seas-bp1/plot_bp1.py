@@ -19,19 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-
-YEAR = 365.25 * 24 * 3600
-
-
-def read_seas(path):
-    rows = []
-    with open(path) as f:
-        for line in f:
-            if not line.strip() or line[0] == "#" or line[0].isalpha():
-                continue
-            rows.append([float(x) for x in line.split()])
-    return rows
-
+from seas_files import YEAR, read_seas, read_table  # noqa: E402
 
 def slip_contours(label, rundir, out):
     rows = read_seas(os.path.join(rundir, "slip.dat"))
@@ -59,7 +47,7 @@ def slip_contours(label, rundir, out):
 def station(runs, name, out):
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
     for label, rundir in runs:
-        d = np.array(read_seas(os.path.join(rundir, "fltst_dp" + name)))
+        d = read_table(os.path.join(rundir, "fltst_dp" + name))
         a1.plot(d[:, 0] / YEAR, d[:, 2], lw=0.8, label=label)
         a2.plot(d[:, 0] / YEAR, d[:, 3], lw=0.8, label=label)
     a1.set_ylabel("log10 slip rate [m/s]")

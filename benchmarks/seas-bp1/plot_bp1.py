@@ -9,7 +9,10 @@ RUNDIR: an rsfcycle run folder written with Output/SEAS on
   DIR/slip-contours-LABEL.png: slip along depth from slip.dat, blue every
     5 years between events, red every second during them;
   DIR/station-XXX.png: log10 slip rate and shear stress at the station
-    fltst_dpXXX over time for every run.
+    fltst_dpXXX over time for every run;
+  DIR/first-event-XXX.png: the same around each run's first event (time
+    from the first moment the maximum slip rate exceeds 1 mm/s), which
+    shows the quasi-dynamic and the fully dynamic rupture side by side.
 """
 import argparse
 import os
@@ -60,6 +63,25 @@ def station(runs, name, out):
     plt.close(fig)
 
 
+def first_event(runs, name, out):
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    for label, rundir in runs:
+        g = read_table(os.path.join(rundir, "global.dat"))
+        start = g[np.argmax(g[:, 1] > -3), 0]
+        d = read_table(os.path.join(rundir, "fltst_dp" + name))
+        window = (d[:, 0] > start - 30) & (d[:, 0] < start + 200)
+        a1.plot(d[window, 0] - start, d[window, 2], lw=0.8, label=label)
+        a2.plot(d[window, 0] - start, d[window, 3], lw=0.8, label=label)
+    a1.set_ylabel("log10 slip rate [m/s]")
+    a2.set_ylabel("shear stress [MPa]")
+    a2.set_xlabel("time from the first event's start (max V > 1 mm/s) [s]")
+    a1.set_title("first event, station at %.1f km depth" % (int(name) / 10))
+    a1.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "first-event-%s.png" % name), dpi=120)
+    plt.close(fig)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--run", action="append", required=True)
@@ -71,6 +93,7 @@ def main():
     for label, rundir in runs:
         slip_contours(label, rundir, args.out)
     station(runs, args.station, args.out)
+    first_event(runs, args.station, args.out)
 
 
 if __name__ == "__main__":

@@ -129,10 +129,11 @@ namespace rsfcycle
                                  const unsigned int index,
                                  const Event       &e)
     {
-      out << std::setprecision(10) << index << "," << e.start << "," << e.end
-          << "," << e.duration() << "," << e.nucleation_position << ","
-          << e.peak_slip_rate << "," << e.rupture_width() << "," << e.slip * 1e6
-          << ",";
+      // start and end with every digit (ms events at t ~ 1e10 s)
+      out << std::setprecision(17) << index << "," << e.start << "," << e.end
+          << std::setprecision(10) << "," << e.duration() << ","
+          << e.nucleation_position << "," << e.peak_slip_rate << ","
+          << e.rupture_width() << "," << e.slip * 1e6 << ",";
       if (e.recurrence > 0)
         out << e.recurrence;
       out << "\n";

@@ -118,9 +118,9 @@ namespace rsfcycle
       const double max_rate =
         (fastest == sample.slip_rates.end()) ? 0. : *fastest;
       const auto &counts = sample.statistics;
-      series_row << t << step_size << counts.fixed_point_iterations
-                 << counts.tnnmg_iterations << counts.linear_iterations
-                 << spatial_problems << max_rate;
+      series_row.precise(t)
+        << step_size << counts.fixed_point_iterations << counts.tnnmg_iterations
+        << counts.linear_iterations << spatial_problems << max_rate;
       for (const double value : sample.observations)
         series_row << value;
       // the work of every spatial problem solved for this step, the
@@ -146,7 +146,7 @@ namespace rsfcycle
     {
       if (!writing)
         return;
-      profile_row << t;
+      profile_row.precise(t);
       for (const unsigned int k : order)
         profile_row << rates[k];
       profile_row.write_line(profile);

@@ -335,24 +335,25 @@ namespace rsfcycle
       unsigned int f              = 0;
       for (const auto &where : stations)
         {
-          row << t << interpolate(where, slip.data())
-              << interpolate(where, log10_rate.data())
-              << interpolate(where, stress.data())
-              << interpolate(where, log10_state.data());
+          row.precise(t) << interpolate(where, slip.data())
+                         << interpolate(where, log10_rate.data())
+                         << interpolate(where, stress.data())
+                         << interpolate(where, log10_state.data());
           row.write_line(*files[f++]);
         }
       const double factor = parameters.mirror ? 0.5 : 1.;
       for (unsigned int i = 0; i < surface_names.size(); ++i)
         {
-          row << t << factor * sample.observations[i]
-              << factor * sample.observation_rates[i];
+          row.precise(t) << factor * sample.observations[i]
+                         << factor * sample.observation_rates[i];
           row.write_line(*files[f++]);
         }
       // G int V ds by the nodes' lumped weights
       double moment_rate = 0;
       for (unsigned int i = 0; i < rate.size(); ++i)
         moment_rate += weights[i] * rate[i];
-      row << t << log10_max_rate << parameters.shear_modulus * moment_rate;
+      row.precise(t) << log10_max_rate
+                     << parameters.shear_modulus * moment_rate;
       row.write_line(*files[f]);
       check();
     }
@@ -361,7 +362,7 @@ namespace rsfcycle
     void
     SeasFiles::write_profile(const double t, const time::Sample &sample)
     {
-      row << t << sort_sample(sample);
+      row.precise(t) << sort_sample(sample);
       for (const auto &where : profile)
         row << interpolate(where, slip.data());
       row.write_line(*files.back());

@@ -116,8 +116,8 @@ refused damaged "head -c 64 /dev/zero | tr '\\0' 'Z' | dd of=checkpoint.bin bs=1
   "checksum mismatch: the checkpoint is damaged"
 refused other-mesh 'cp ../coarser/checkpoint.bin checkpoint.bin' \
   "written for $(grep -o '[0-9]* unknowns' coarser.log | head -1), this run has $(grep -o '[0-9]* unknowns' wedge.log | head -1 | cut -d' ' -f1)"
-refused other-format "printf '\\x02' | dd of=checkpoint.bin bs=1 seek=8 conv=notrunc 2> /dev/null" \
-  "written in checkpoint format 2"
+refused other-format "printf '\\x03' | dd of=checkpoint.bin bs=1 seek=8 conv=notrunc 2> /dev/null" \
+  "written in checkpoint format 3"
 
 # the advice of the message: the previous checkpoint continues the run
 mv truncated/checkpoint.bin.prev truncated/checkpoint.bin

@@ -52,6 +52,26 @@ namespace rsfcycle
         return *this;
       }
 
+      /**
+       * Append a real number with the 17 significant digits that give a
+       * double back exactly: times, whose steps (milliseconds in events)
+       * are far below `precision` digits of t ~ 1e10 s.
+       */
+      CsvRow &
+      precise(const double value)
+      {
+        separate();
+        char       digits[64];
+        const auto end = std::to_chars(digits,
+                                       digits + sizeof(digits),
+                                       value,
+                                       std::chars_format::general,
+                                       17)
+                           .ptr;
+        buffer.append(digits, end - digits);
+        return *this;
+      }
+
       /** Append a count. */
       CsvRow &
       operator<<(const unsigned long long value)

@@ -99,6 +99,8 @@ def main():
                         help="events left out of the means (spin-up)")
     parser.add_argument("--events", type=int, default=6,
                         help="events compared one by one")
+    parser.add_argument("--tmax", type=float, default=None,
+                        help="the figures' time axis ends here [yr]")
     parser.add_argument("--out", default=".")
     args = parser.parse_args()
 
@@ -166,6 +168,8 @@ def main():
             y = np.log10(r[column]) if column == 2 else r[column]
             ax.plot(r[1] / YEAR, y, lw=0.8, label=r[0])
         ax.set_xlabel("time [yr]")
+        if args.tmax:
+            ax.set_xlim(0, args.tmax)
         ax.set_ylabel(ylabel)
         ax.legend()
         fig.tight_layout()

@@ -47,39 +47,45 @@ def slip_contours(label, rundir, out):
     plt.close(fig)
 
 
-def station(runs, name, out):
+def two_panels(curves, xlabel, title, path):
+    """log10 slip rate above, shear stress below; curves: (label, t, d)
+    with d the rows of a station file."""
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
-    for label, rundir in runs:
-        d = read_table(os.path.join(rundir, "fltst_dp" + name))
-        a1.plot(d[:, 0] / YEAR, d[:, 2], lw=0.8, label=label)
-        a2.plot(d[:, 0] / YEAR, d[:, 3], lw=0.8, label=label)
+    for label, t, d in curves:
+        a1.plot(t, d[:, 2], lw=0.8, label=label)
+        a2.plot(t, d[:, 3], lw=0.8, label=label)
     a1.set_ylabel("log10 slip rate [m/s]")
     a2.set_ylabel("shear stress [MPa]")
-    a2.set_xlabel("time [yr]")
-    a1.set_title("station at %.1f km depth" % (int(name) / 10))
+    a2.set_xlabel(xlabel)
+    a1.set_title(title)
     a1.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "station-%s.png" % name), dpi=120)
+    fig.savefig(path, dpi=120)
     plt.close(fig)
 
 
+def station(runs, name, out):
+    curves = []
+    for label, rundir in runs:
+        d = read_table(os.path.join(rundir, "fltst_dp" + name))
+        curves.append((label, d[:, 0] / YEAR, d))
+    two_panels(curves, "time [yr]",
+               "station at %.1f km depth" % (int(name) / 10),
+               os.path.join(out, "station-%s.png" % name))
+
+
 def first_event(runs, name, out):
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    curves = []
     for label, rundir in runs:
         g = read_table(os.path.join(rundir, "global.dat"))
         start = g[np.argmax(g[:, 1] > -3), 0]
         d = read_table(os.path.join(rundir, "fltst_dp" + name))
-        window = (d[:, 0] > start - 30) & (d[:, 0] < start + 200)
-        a1.plot(d[window, 0] - start, d[window, 2], lw=0.8, label=label)
-        a2.plot(d[window, 0] - start, d[window, 3], lw=0.8, label=label)
-    a1.set_ylabel("log10 slip rate [m/s]")
-    a2.set_ylabel("shear stress [MPa]")
-    a2.set_xlabel("time from the first event's start (max V > 1 mm/s) [s]")
-    a1.set_title("first event, station at %.1f km depth" % (int(name) / 10))
-    a1.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "first-event-%s.png" % name), dpi=120)
-    plt.close(fig)
+        d = d[(d[:, 0] > start - 30) & (d[:, 0] < start + 200)]
+        curves.append((label, d[:, 0] - start, d))
+    two_panels(curves,
+               "time from the first event's start (max V > 1 mm/s) [s]",
+               "first event, station at %.1f km depth" % (int(name) / 10),
+               os.path.join(out, "first-event-%s.png" % name))
 
 
 def main():

@@ -40,16 +40,7 @@ namespace rsfcycle
       CsvRow &
       operator<<(const double value)
       {
-        separate();
-        char       digits[64];
-        const auto end = std::to_chars(digits,
-                                       digits + sizeof(digits),
-                                       value,
-                                       std::chars_format::general,
-                                       precision)
-                           .ptr;
-        buffer.append(digits, end - digits);
-        return *this;
+        return append(value, precision);
       }
 
       /**
@@ -60,16 +51,7 @@ namespace rsfcycle
       CsvRow &
       precise(const double value)
       {
-        separate();
-        char       digits[64];
-        const auto end = std::to_chars(digits,
-                                       digits + sizeof(digits),
-                                       value,
-                                       std::chars_format::general,
-                                       17)
-                           .ptr;
-        buffer.append(digits, end - digits);
-        return *this;
+        return append(value, 17);
       }
 
       /** Append a count. */
@@ -100,6 +82,21 @@ namespace rsfcycle
       }
 
     private:
+      CsvRow &
+      append(const double value, const int digits)
+      {
+        separate();
+        char       text[64];
+        const auto end = std::to_chars(text,
+                                       text + sizeof(text),
+                                       value,
+                                       std::chars_format::general,
+                                       digits)
+                           .ptr;
+        buffer.append(text, end - text);
+        return *this;
+      }
+
       void
       separate()
       {

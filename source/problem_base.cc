@@ -402,18 +402,18 @@ namespace rsfcycle
   time::Sample
   ProblemBase<dim>::sample(const BodyState &state) const
   {
-    time::Sample sample;
-    sample.slip_rates = contact.gather(contact.slip_rates(state.v));
+    time::Sample              sample;
+    const std::vector<double> rates = contact.slip_rates(state.v);
+    sample.slip_rates               = contact.gather(rates);
     sample.slip = contact.gather(contact.tangential_displacement(state.u));
     sample.observations = observed_uplift(state.u);
     sample.statistics   = state.statistics;
     if (parameters.output.seas.enabled())
       {
         // the friction stress |sigma_n| mu(V, alpha) + C of the accepted
-        // state, and log10 theta = (alpha + ln(L / V*)) / ln 10
-        const std::vector<double> rates = contact.slip_rates(state.v);
-        std::vector<double>       stresses, log10_states;
-        const auto               &nodes = contact.nodes();
+        // state, and log10 theta
+        std::vector<double> stresses, log10_states;
+        const auto         &nodes = contact.nodes();
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
             const auto &p = nodes[k].params;
@@ -421,8 +421,7 @@ namespace rsfcycle
               nodes[k].normal_force / nodes[k].weight *
                 friction::friction_coefficient(p, state.alpha[k], rates[k]) +
               (rates[k] > 0 ? p.cohesion : 0.));
-            log10_states.push_back((state.alpha[k] + std::log(p.L / p.v_star)) /
-                                   std::log(10.));
+            log10_states.push_back(p.log_theta(state.alpha[k]) / std::log(10.));
           }
         sample.shear_stresses    = contact.gather(stresses);
         sample.log10_states      = contact.gather(log10_states);

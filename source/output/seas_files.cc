@@ -119,11 +119,11 @@ namespace rsfcycle
           format_number(slip_profile[1]) + ", " +
           format_number(slip_profile[2]) +
           ": needs first <= last and a spacing > 0");
-      std::vector<long> numbers;
+      std::vector<std::string> names;
       for (const double x : fault_stations)
-        numbers.push_back(std::lround(x / 100));
-      std::sort(numbers.begin(), numbers.end());
-      if (std::adjacent_find(numbers.begin(), numbers.end()) != numbers.end())
+        names.push_back(fault_station_file(x));
+      std::sort(names.begin(), names.end());
+      if (std::adjacent_find(names.begin(), names.end()) != names.end())
         throw std::invalid_argument(
           entry + "Fault stations: two stations share the file name "
                   "fltst_dpXXX (XXX counts 100 m): give stations at least "
@@ -132,6 +132,16 @@ namespace rsfcycle
         throw std::invalid_argument(
           entry + "Slip profile: more than 100000 positions; choose a "
                   "larger spacing");
+    }
+
+
+    std::string
+    SeasParameters::fault_station_file(const double x)
+    {
+      std::ostringstream name;
+      name << "fltst_dp" << std::setfill('0') << std::setw(3)
+           << std::lround(x / 100);
+      return name.str();
     }
 
 
@@ -163,11 +173,8 @@ namespace rsfcycle
       for (const double x : parameters.fault_stations)
         {
           stations.push_back(locate(x, "Fault stations"));
-          const long         tenths = std::lround(x / 100);
-          std::ostringstream name;
-          name << "fltst_dp" << std::setfill('0') << std::setw(3) << tenths;
-          station_names.push_back(name.str());
-          file_paths.push_back(dir + "/" + name.str());
+          file_paths.push_back(dir + "/" +
+                               SeasParameters::fault_station_file(x));
         }
       for (const auto &name : layout.station_names)
         {

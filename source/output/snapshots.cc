@@ -168,7 +168,7 @@ namespace rsfcycle
           field[log_slip_rate].local_element(dof) =
             std::log10(std::max(rates[k] / v0, 1e-20));
           field[theta].local_element(dof) =
-            info.params.L / info.params.v_star * std::exp(state.alpha[k]);
+            std::exp(info.params.log_theta(state.alpha[k]));
           field[mu].local_element(dof) =
             friction::friction_coefficient(info.params,
                                            state.alpha[k],

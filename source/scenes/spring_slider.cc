@@ -297,8 +297,7 @@ namespace rsfcycle
       sample.statistics.fixed_point_iterations = s.fixed_point_iterations;
       sample.shear_stresses = {normal_stress * friction_coefficient(s) +
                                (s.velocity != 0 ? cohesion : 0.)};
-      sample.log10_states   = {
-          (s.alpha + std::log(friction.L / friction.v_star)) / std::log(10.)};
+      sample.log10_states   = {friction.log_theta(s.alpha) / std::log(10.)};
       return sample;
     }
 

@@ -83,12 +83,11 @@ namespace
            "shear stress [MPa], log10 theta\n";
     for (const double x : parameters.output.seas.fault_stations)
       {
-        std::ostringstream name;
-        name << "fltst_dp" << std::setfill('0') << std::setw(3)
-             << std::lround(x / 100);
-        const auto rows = read_seas(dir + name.str());
+        const std::string name =
+          rsfcycle::output::SeasParameters::fault_station_file(x);
+        const auto rows = read_seas(dir + name);
         const auto last = rows.back();
-        out << name.str() << " " << rows.size() << "; " << last[0] << " "
+        out << name << " " << rows.size() << "; " << last[0] << " "
             << last[1] * 1e6 << " " << last[2] << " " << last[3] << " "
             << last[4] << "\n";
       }

@@ -46,6 +46,13 @@ namespace rsfcycle
       {
         return std::log(v_star) - (mu_star + b * alpha) / a;
       }
+
+      /** log theta = alpha + log(L / V*): the state [s] of alpha. */
+      double
+      log_theta(const double alpha) const
+      {
+        return alpha + std::log(L / v_star);
+      }
     };
 
     /**

@@ -112,7 +112,7 @@ namespace rsfcycle
       std::vector<double>        weights;   // sorted like positions
       std::vector<Interpolation> stations, profile;
       std::vector<double>        profile_positions;
-      std::vector<std::string>   station_names, surface_names;
+      std::vector<std::string>   surface_names;
       double                     element_size = 0;
       std::vector<std::string>   file_paths;
       std::vector<std::unique_ptr<std::ofstream>> files;

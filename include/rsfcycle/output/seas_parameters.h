@@ -40,6 +40,13 @@ namespace rsfcycle
        */
       void
       validate(unsigned int dimension) const;
+
+      /**
+       * The file of the fault station at x [m] along the contact:
+       * fltst_dpXXX, XXX = x in units of 100 m (3 digits at least).
+       */
+      static std::string
+      fault_station_file(double x);
     };
 
   } // namespace output

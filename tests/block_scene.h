@@ -1,6 +1,7 @@
 // The scene of the unit tests of the time step and the damping: a 1 m x
 // 0.25 m plane-strain block (4 x 1 coarse cells) on a base (contact) at
-// y = 0, held at the backstop x = 1, traction free elsewhere; no gravity,
+// y = 0, held at the backstop x = 1, traction free elsewhere (or the top
+// absorbing: absorbing_top); no gravity,
 // zero friction (mu* = 0, b = 0; with no gravity every normal force
 // vanishes). Density 1000 kg/m^3, K = 1 MPa, nu = 0.25 (G = 0.6 MPa),
 // viscosities relaxation_time x the moduli. Local refinement goes toward
@@ -21,6 +22,8 @@ class Block : public scenes::Scene<2>
 public:
   /** Kelvin-Voigt relaxation time eta/G = eta_b/K [s]; 0: inviscid. */
   double relaxation_time = 0;
+  /** The top y = 0.25 m absorbing instead of traction free. */
+  bool absorbing_top = false;
 
   void
   create_coarse_mesh(Triangulation<2> &tria) const override
@@ -33,10 +36,12 @@ public:
       if (face->at_boundary())
         {
           const Point<2> c = face->center();
-          face->set_boundary_id(std::abs(c[1]) < 1e-12 ? boundary_id::contact :
-                                std::abs(c[0] - 1) < 1e-12 ?
-                                                         boundary_id::backstop :
-                                                         boundary_id::surface);
+          face->set_boundary_id(
+            std::abs(c[1]) < 1e-12     ? boundary_id::contact :
+            std::abs(c[0] - 1) < 1e-12 ? boundary_id::backstop :
+            absorbing_top && std::abs(c[1] - 0.25) < 1e-12 ?
+                                         boundary_id::absorbing :
+                                         boundary_id::surface);
         }
   }
   double

@@ -11,14 +11,18 @@ namespace rsfcycle
    *  - surface: traction free;
    *  - backstop: prescribed velocity v(t) (all components);
    *  - contact: the base y = 0, u.n = 0 and rate-and-state friction;
-   *  - lateral: 3D side walls, no normal velocity (free slip).
+   *  - lateral: 3D side walls, no normal velocity (free slip);
+   *  - absorbing: the truncation of an unbounded body, where outgoing
+   *    waves leave: the dashpots (Lysmer and Kuhlemeyer) of the traction
+   *    -rho (c_p v_n n + c_s v_t) (antiplane: -rho c_s v).
    */
   namespace boundary_id
   {
-    constexpr dealii::types::boundary_id surface  = 0;
-    constexpr dealii::types::boundary_id backstop = 1;
-    constexpr dealii::types::boundary_id contact  = 2;
-    constexpr dealii::types::boundary_id lateral  = 3;
+    constexpr dealii::types::boundary_id surface   = 0;
+    constexpr dealii::types::boundary_id backstop  = 1;
+    constexpr dealii::types::boundary_id contact   = 2;
+    constexpr dealii::types::boundary_id lateral   = 3;
+    constexpr dealii::types::boundary_id absorbing = 4;
   } // namespace boundary_id
 
   /** Material ids: the regions of MODEL.md §5 (density, viscosity). */

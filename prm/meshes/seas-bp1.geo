@@ -2,9 +2,11 @@
 // prm/seas-bp1-qd.prm in the benchmark's coordinates: x >= 0 the distance
 // from the fault, y = -depth. The fault x = 0 carries rate-and-state
 // friction down to W_f = 40 km (tag 1, contact) and creeps at the plate
-// rate below (tag 2, load); the remote side x = L is loaded at the plate
-// rate as well (tag 2); the free surface y = 0 and the bottom y = -L are
-// traction free (tag 3). Coarse cells: 1.6 km along the fault (25 on the
+// rate below (tag 2, load); the free surface y = 0 is traction free (tag
+// 3). The bottom y = -L (tag 4) and the remote side x = L (tag 5) truncate
+// the half-space: BP1-QD makes the bottom traction free and loads the
+// remote side at the plate rate (prm/seas-bp1-qd.prm), BP1-FD makes both
+// absorbing (prm/seas-bp1-fd.prm). Coarse cells: 1.6 km along the fault (25 on the
 // frictional part, so that k refinements give 1600 / 2^k m), growing by
 // 1.3 per cell away from it (L = 400 km, about 17 cells).
 // Regenerate: gmsh -2 -format msh2 -o seas-bp1.msh seas-bp1.geo
@@ -46,7 +48,9 @@ Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};
 Transfinite Surface{1, 2};
 Recombine Surface{1, 2};
 
-Physical Curve(1) = {1};          // contact
-Physical Curve(2) = {2, 4, 5};    // load
-Physical Curve(3) = {3, 6};       // free
+Physical Curve(1) = {1};          // frictional fault: contact
+Physical Curve(2) = {2};          // creeping fault: load
+Physical Curve(3) = {6};          // free surface: free
+Physical Curve(4) = {3};          // bottom: free (QD), absorbing (FD)
+Physical Curve(5) = {4, 5};       // remote side: load (QD), absorbing (FD)
 Physical Surface(10) = {1, 2};

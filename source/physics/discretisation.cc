@@ -254,6 +254,65 @@ namespace rsfcycle
           }
       if (options.radiation_damping)
         add_contact_terms(cell, &material, &cell_viscosity, nullptr);
+      add_absorbing_terms(cell, material, cell_viscosity);
+    }
+
+
+    template <int dim>
+    template <class Iterator>
+    void
+    Discretisation<dim>::add_absorbing_terms(
+      const Iterator         &cell,
+      const scenes::Material &material,
+      FullMatrix<double>     &cell_viscosity) const
+    {
+      const double c_s = std::sqrt(material.shear_modulus() / material.density);
+      const double c_p =
+        std::sqrt((material.bulk_modulus + 4. / 3. * material.shear_modulus()) /
+                  material.density);
+      std::unique_ptr<FEFaceValues<dim>> fe_face;
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary() ||
+              cell->face(f)->boundary_id() != boundary_id::absorbing)
+            continue;
+          if (!fe_face)
+            fe_face =
+              std::make_unique<FEFaceValues<dim>>(fe,
+                                                  QTrapezoid<dim - 1>(),
+                                                  update_values |
+                                                    update_normal_vectors |
+                                                    update_JxW_values);
+          fe_face->reinit(cell, f);
+          // lumped (vertex quadrature): at each vertex the dashpot
+          // rho (c_p n n^T + c_s (I - n n^T)) couples the components of the
+          // vertex's own dofs only
+          for (const unsigned int q : fe_face->quadrature_point_indices())
+            {
+              const Tensor<1, dim> &n   = fe_face->normal_vector(q);
+              const double          JxW = fe_face->JxW(q);
+              for (const unsigned int i : fe_face->dof_indices())
+                for (const unsigned int j : fe_face->dof_indices())
+                  {
+                    const double phi_phi =
+                      fe_face->shape_value(i, q) * fe_face->shape_value(j, q);
+                    if (phi_phi == 0)
+                      continue;
+                    double impedance = material.density * c_s;
+                    if (!options.antiplane)
+                      {
+                        const unsigned int ci =
+                          fe.system_to_component_index(i).first;
+                        const unsigned int cj =
+                          fe.system_to_component_index(j).first;
+                        impedance =
+                          material.density *
+                          ((c_p - c_s) * n[ci] * n[cj] + (ci == cj ? c_s : 0.));
+                      }
+                    cell_viscosity(i, j) += impedance * phi_phi * JxW;
+                  }
+            }
+        }
     }
 
 

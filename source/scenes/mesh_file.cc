@@ -303,7 +303,8 @@ namespace rsfcycle
         {"contact", boundary_id::contact},
         {"load", boundary_id::backstop},
         {"free", boundary_id::surface},
-        {"free-slip", boundary_id::lateral}};
+        {"free-slip", boundary_id::lateral},
+        {"absorbing", boundary_id::absorbing}};
       along_offset = std::numeric_limits<double>::max();
       for (const auto &cell : coarse.active_cell_iterators())
         for (const unsigned int f : cell->face_indices())

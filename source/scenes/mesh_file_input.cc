@@ -51,10 +51,8 @@ namespace rsfcycle
       std::map<types::boundary_id, std::string>
       parse_roles(const std::string &text)
       {
-        const std::set<std::string>               allowed = {"contact",
-                                                             "load",
-                                                             "free",
-                                                             "free-slip"};
+        const std::set<std::string> allowed = {
+          "contact", "load", "free", "free-slip", "absorbing"};
         std::map<types::boundary_id, std::string> roles;
         for (const auto &item : Utilities::split_string_list(text, ','))
           {
@@ -62,8 +60,8 @@ namespace rsfcycle
             if (pair.size() != 2 || allowed.count(pair[1]) == 0)
               fail("Boundary roles",
                    ": '" + item +
-                     "' is not 'tag: role' with role contact, load, free or "
-                     "free-slip");
+                     "' is not 'tag: role' with role contact, load, free, "
+                     "free-slip or absorbing");
             const auto tag = static_cast<types::boundary_id>(
               Utilities::string_to_int(pair[0]));
             const auto [it, inserted] = roles.emplace(tag, pair[1]);
@@ -180,8 +178,13 @@ namespace rsfcycle
           "rigid base, zero normal velocity; one plane), load (prescribed "
           "velocity Load velocity), free (traction free), free-slip (zero "
           "normal velocity; in 2D parallel to the contact, in 3D "
-          "perpendicular to it with one normal for all). Every boundary tag "
-          "of the mesh needs a role; faces without a physical tag have tag 0");
+          "perpendicular to it with one normal for all), absorbing (the "
+          "truncation of an unbounded body: the dashpot traction -rho (c_p "
+          "v_n n + c_s v_t), antiplane -rho c_s v, of the adjacent cell's "
+          "material lets waves that reach it normally leave; it also resists "
+          "slow motion, by rho c_s v, about 5 kPa per mm/s for rock). Every "
+          "boundary tag of the mesh needs a role; faces without a physical "
+          "tag have tag 0");
         prm.declare_entry(
           "Materials",
           "",

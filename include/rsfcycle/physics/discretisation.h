@@ -257,6 +257,18 @@ namespace rsfcycle
                         FullMatrix<double>     *cell_viscosity,
                         Vector<double>         *cell_force) const;
 
+      /**
+       * The dashpots of a cell's absorbing faces (boundary_id::absorbing)
+       * in the viscosity matrix: rho (c_p n n^T + c_s (I - n n^T)) w_i at
+       * every face vertex (antiplane: rho c_s w_i), w_i the vertex
+       * quadrature weights, with the cell's material.
+       */
+      template <class Iterator>
+      void
+      add_absorbing_terms(const Iterator         &cell,
+                          const scenes::Material &material,
+                          FullMatrix<double>     &cell_viscosity) const;
+
       struct StepMatrix
       {
         std::array<double, 3>                           coefficients;

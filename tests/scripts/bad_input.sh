@@ -97,6 +97,7 @@ check_mesh mesh-initial-state "Friction/Initial state" $simplex "$one_material\n
 check_mesh mesh-normal-stress "Friction/Normal stress" $simplex "$one_material\nsubsection Friction\nset Normal stress = 1e6 * (x - 0.5)\nend"
 check_mesh mesh-antiplane-normal-stress "Normal stress" $simplex "$one_material\nset Load velocity = 50e-6\nend\nset Displacement = antiplane\nsubsection Mesh file"
 check_mesh mesh-antiplane-load "Load velocity" $simplex "$one_material\nend\nset Displacement = antiplane\nsubsection Mesh file"
+check_mesh mesh-seas-station "Output/SEAS/Fault stations: 100 m lies outside the contact" $simplex "$one_material\nend\nsubsection Output\nsubsection SEAS\nset Problem = BP1\nset Shear modulus = 1e10\nset Fault stations = 0, 100\nset Slip profile = 0, 0.1, 0.05\nend\nend\nsubsection Mesh file"
 check_mesh mesh-radiation-damping "Friction/Radiation damping" $simplex "$one_material\nsubsection Friction\nset Radiation damping = -1\nend"
 
 # missing parameter file

@@ -94,6 +94,13 @@ namespace rsfcycle
       /** Rotation R (rows: the rotated axes in mesh coordinates) and origin. */
       Tensor<2, dim> rotation;
       Point<dim>     origin;
+      /**
+       * The SEAS fault stations and slip profile within the coarse
+       * contact's extent (std::invalid_argument naming the entry).
+       */
+      void
+      check_seas_positions(ParameterHandler &prm) const;
+
       /** along-base coordinate s = along_sign x' - along_offset. */
       double along_sign = 1, along_offset = 0;
 

@@ -270,23 +270,14 @@ namespace rsfcycle
       const double c_p =
         std::sqrt((material.bulk_modulus + 4. / 3. * material.shear_modulus()) /
                   material.density);
-      std::unique_ptr<FEFaceValues<dim>> fe_face;
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary() ||
-              cell->face(f)->boundary_id() != boundary_id::absorbing)
-            continue;
-          if (!fe_face)
-            fe_face =
-              std::make_unique<FEFaceValues<dim>>(fe,
-                                                  QTrapezoid<dim - 1>(),
-                                                  update_values |
-                                                    update_normal_vectors |
-                                                    update_JxW_values);
-          fe_face->reinit(cell, f);
-          // lumped (vertex quadrature): at each vertex the dashpot
-          // rho (c_p n n^T + c_s (I - n n^T)) couples the components of the
-          // vertex's own dofs only
+      // lumped (vertex quadrature): at each vertex the dashpot
+      // rho (c_p n n^T + c_s (I - n n^T)) couples the components of the
+      // vertex's own dofs only
+      for_each_boundary_face(
+        cell,
+        boundary_id::absorbing,
+        update_values | update_normal_vectors | update_JxW_values,
+        [&](const FEFaceValues<dim> *fe_face) {
           for (const unsigned int q : fe_face->quadrature_point_indices())
             {
               const Tensor<1, dim> &n   = fe_face->normal_vector(q);
@@ -312,6 +303,31 @@ namespace rsfcycle
                     cell_viscosity(i, j) += impedance * phi_phi * JxW;
                   }
             }
+        });
+    }
+
+
+    template <int dim>
+    template <class Iterator, class FaceFunction>
+    void
+    Discretisation<dim>::for_each_boundary_face(
+      const Iterator          &cell,
+      const types::boundary_id id,
+      const UpdateFlags        flags,
+      const FaceFunction      &function) const
+    {
+      std::unique_ptr<FEFaceValues<dim>> fe_face;
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->face(f)->at_boundary() ||
+              cell->face(f)->boundary_id() != id)
+            continue;
+          if (!fe_face)
+            fe_face = std::make_unique<FEFaceValues<dim>>(fe,
+                                                          QTrapezoid<dim - 1>(),
+                                                          flags);
+          fe_face->reinit(cell, f);
+          function(fe_face.get());
         }
     }
 
@@ -357,20 +373,11 @@ namespace rsfcycle
                                            FullMatrix<double> *cell_viscosity,
                                            Vector<double>     *cell_force) const
     {
-      std::unique_ptr<FEFaceValues<dim>> fe_face;
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary() ||
-              cell->face(f)->boundary_id() != boundary_id::contact)
-            continue;
-          if (!fe_face)
-            fe_face =
-              std::make_unique<FEFaceValues<dim>>(fe,
-                                                  QTrapezoid<dim - 1>(),
-                                                  update_values |
-                                                    update_quadrature_points |
-                                                    update_JxW_values);
-          fe_face->reinit(cell, f);
+      for_each_boundary_face(
+        cell,
+        boundary_id::contact,
+        update_values | update_quadrature_points | update_JxW_values,
+        [&](const FEFaceValues<dim> *fe_face) {
           // lumped (vertex quadrature, as the friction's weights) on every
           // tangential component (not y, the normal of the base in the
           // rotated frame): eta w_i on the diagonal, tau_0 w_i in the force
@@ -396,7 +403,7 @@ namespace rsfcycle
                     (*cell_force)(i) += traction[component] * phi * JxW;
                 }
             }
-        }
+        });
     }
 
 

@@ -258,6 +258,18 @@ namespace rsfcycle
                         Vector<double>         *cell_force) const;
 
       /**
+       * Calls function(fe_face) for each face of the cell on the boundary
+       * `id`, fe_face reinitialised on it with vertex quadrature (the
+       * lumped boundary terms) and `flags`.
+       */
+      template <class Iterator, class FaceFunction>
+      void
+      for_each_boundary_face(const Iterator     &cell,
+                             types::boundary_id  id,
+                             UpdateFlags         flags,
+                             const FaceFunction &function) const;
+
+      /**
        * The dashpots of a cell's absorbing faces (boundary_id::absorbing)
        * in the viscosity matrix: rho (c_p n n^T + c_s (I - n n^T)) w_i at
        * every face vertex (antiplane: rho c_s w_i), w_i the vertex

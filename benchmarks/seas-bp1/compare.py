@@ -53,10 +53,13 @@ def peer_series(path):
     return t, v, slip
 
 
-def events(t, v, slip):
-    """(start [s], peak [m/s], surface slip [m]) of every completed event."""
+def events(t, v, slip, merge=0.0):
+    """(start [s], peak [m/s], surface slip [m]) of every completed event;
+    a crossing that starts within `merge` seconds of the end of the one
+    before is part of it (BP1-FD's slip rate crosses 1 mm/s again and again
+    for minutes after a rupture)."""
     above = v > THRESHOLD
-    result = []
+    spans = []  # [first index above (or the sample before), end index]
     i = 0
     n = len(t)
     while i < n:
@@ -66,11 +69,17 @@ def events(t, v, slip):
                 j += 1
             if j == n:
                 break  # still running at the end
-            start = i - 1 if i > 0 else i
-            result.append((t[i], v[i:j].max(), slip[j] - slip[start]))
+            if spans and t[i] - t[spans[-1][1]] <= merge:
+                spans[-1][1] = j
+            else:
+                spans.append([i, j])
             i = j
         else:
             i += 1
+    result = []
+    for i, j in spans:
+        start = i - 1 if i > 0 else i
+        result.append((t[i], v[i:j].max(), slip[j] - slip[start]))
     return np.array(result)
 
 
@@ -101,6 +110,9 @@ def main():
                         help="events compared one by one")
     parser.add_argument("--tmax", type=float, default=None,
                         help="the figures' time axis ends here [yr]")
+    parser.add_argument("--merge", type=float, default=0.0,
+                        help="crossings of 1 mm/s within this many seconds "
+                        "of the one before are one event [s]")
     parser.add_argument("--out", default=".")
     args = parser.parse_args()
 
@@ -112,7 +124,7 @@ def main():
         label, path = item.split("=", 1)
         runs.append((label, *rsfcycle_series(path)))
 
-    rows = [summary(r[0], events(*r[1:]), r[1][-1], args.skip) for r in runs]
+    rows = [summary(r[0], events(*r[1:], args.merge), r[1][-1], args.skip) for r in runs]
     ref = rows[0]
     print("| run | simulated [yr] | events | first event [yr] | mean recurrence "
           "[yr] (spread) | first: peak V [m/s], surface slip [m] | median "
@@ -135,13 +147,13 @@ def main():
                   r["slip"], diff(r["slip"], ref["slip"])))
 
     # event by event against the reference (the first run given)
-    ref_events = events(*runs[0][1:])
+    ref_events = events(*runs[0][1:], args.merge)
     print()
     print("| run | event | start [yr] | interval [yr] | peak V [m/s] | "
           "surface slip [m] |")
     print("|---|---|---|---|---|---|")
     for r in runs:
-        ev = events(*r[1:])
+        ev = events(*r[1:], args.merge)
         for k in range(min(len(ev), len(ref_events), args.events)):
             interval = (ev[k, 0] - ev[k - 1, 0]) / YEAR if k > 0 else None
             ref_interval = ((ref_events[k, 0] - ref_events[k - 1, 0]) / YEAR

@@ -182,6 +182,17 @@ namespace rsfcycle
                       "doubled if 8 x its error estimate (the estimate of "
                       "the doubled step: it grows as tau^3) is at most this "
                       "factor x Tolerance [-]");
+    prm.declare_entry("Error norm",
+                      "L2",
+                      Selection("L2|max"),
+                      "The norm of the difference of two states (log state "
+                      "per contact node) in the step-doubling error estimate "
+                      "of the time step: L2 is the distance (14), the "
+                      "area-weighted root mean square over the contact; max "
+                      "is the largest difference at any contact node, which "
+                      "does not dilute the error of a nucleation zone a few "
+                      "cells wide (the fixed-point iteration always uses "
+                      "(14)) [-]");
     prm.declare_entry("Tolerance",
                       "1e-5",
                       Double(1e-300, 1),
@@ -213,6 +224,7 @@ namespace rsfcycle
     extrapolated_start = prm.get_bool("Extrapolated start");
     step_sizes         = prm.get("Step sizes");
     doubling_threshold = prm.get_double("Doubling threshold");
+    error_norm         = prm.get("Error norm");
     tolerance          = prm.get_double("Tolerance");
     initial_step       = prm.get_double("Initial step");
     minimum_step       = prm.get_double("Minimum step");

@@ -361,6 +361,17 @@ namespace rsfcycle
 
 
   template <int dim>
+  double
+  ProblemBase<dim>::error_distance(const std::vector<double> &alpha1,
+                                   const std::vector<double> &alpha2) const
+  {
+    return parameters.time_stepping.error_norm == "max" ?
+             contact.state_max_distance(alpha1, alpha2) :
+             contact.state_distance(alpha1, alpha2);
+  }
+
+
+  template <int dim>
   std::vector<double>
   ProblemBase<dim>::slip_rates(const la::Vector &v) const
   {
@@ -561,7 +572,7 @@ namespace rsfcycle
              const double     dt,
              const BodyState *guess) { return newmark_step(s, t0, dt, guess); },
       [this](const BodyState &s1, const BodyState &s2) {
-        return state_distance(s1.alpha, s2.alpha);
+        return error_distance(s1.alpha, s2.alpha);
       },
       [](const std::array<const BodyState *, 3> &s,
          const std::array<double, 3>            &w) {

@@ -60,6 +60,7 @@ namespace rsfcycle
     bool        extrapolated_start = true;
     std::string step_sizes         = "ladder";
     double      doubling_threshold = 1;
+    std::string error_norm         = "L2";
     double      tolerance          = 1e-5;
     double      initial_step       = 1e-2;
     double      minimum_step       = 1e-9;

@@ -79,6 +79,15 @@ namespace rsfcycle
     state_distance(const std::vector<double> &alpha1,
                    const std::vector<double> &alpha2) const;
 
+    /**
+     * The distance of two states in the time step's error estimate
+     * (`Time stepping/Error norm`): (14), or the largest difference at a
+     * contact node.
+     */
+    double
+    error_distance(const std::vector<double> &alpha1,
+                   const std::vector<double> &alpha2) const;
+
     /** Slip rate |v_T| of every contact node. */
     std::vector<double>
     slip_rates(const la::Vector &v) const;

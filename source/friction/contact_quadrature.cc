@@ -189,6 +189,21 @@ namespace rsfcycle
 
 
     template <int dim>
+    double
+    ContactQuadrature<dim>::state_max_distance(
+      const std::vector<double> &alpha1,
+      const std::vector<double> &alpha2) const
+    {
+      double largest = 0;
+      for (unsigned int k = 0; k < alpha1.size(); ++k)
+        largest = std::max(largest, std::abs(alpha1[k] - alpha2[k]));
+      if (n_ranks > 1)
+        largest = Utilities::MPI::max(largest, communicator);
+      return largest;
+    }
+
+
+    template <int dim>
     std::vector<double>
     ContactQuadrature<dim>::slip_rates(const la::Vector &v) const
     {

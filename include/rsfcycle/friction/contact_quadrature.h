@@ -77,6 +77,11 @@ namespace rsfcycle
       state_distance(const std::vector<double> &alpha1,
                      const std::vector<double> &alpha2) const;
 
+      /** max_k |alpha1_k - alpha2_k| over the contact nodes (all ranks). */
+      double
+      state_max_distance(const std::vector<double> &alpha1,
+                         const std::vector<double> &alpha2) const;
+
       /** Slip rate |v_T| of every contact node. */
       std::vector<double>
       slip_rates(const la::Vector &v) const;

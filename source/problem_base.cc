@@ -352,26 +352,6 @@ namespace rsfcycle
 
 
   template <int dim>
-  double
-  ProblemBase<dim>::state_distance(const std::vector<double> &alpha1,
-                                   const std::vector<double> &alpha2) const
-  {
-    return contact.state_distance(alpha1, alpha2);
-  }
-
-
-  template <int dim>
-  double
-  ProblemBase<dim>::error_distance(const std::vector<double> &alpha1,
-                                   const std::vector<double> &alpha2) const
-  {
-    return parameters.time_stepping.error_norm == "max" ?
-             contact.state_max_distance(alpha1, alpha2) :
-             contact.state_distance(alpha1, alpha2);
-  }
-
-
-  template <int dim>
   std::vector<double>
   ProblemBase<dim>::slip_rates(const la::Vector &v) const
   {

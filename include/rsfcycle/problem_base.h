@@ -77,7 +77,10 @@ namespace rsfcycle
     /** The state distance (14) between two states. */
     double
     state_distance(const std::vector<double> &alpha1,
-                   const std::vector<double> &alpha2) const;
+                   const std::vector<double> &alpha2) const
+    {
+      return contact.state_distance(alpha1, alpha2);
+    }
 
     /**
      * The distance of two states in the time step's error estimate
@@ -86,7 +89,12 @@ namespace rsfcycle
      */
     double
     error_distance(const std::vector<double> &alpha1,
-                   const std::vector<double> &alpha2) const;
+                   const std::vector<double> &alpha2) const
+    {
+      return parameters.time_stepping.error_norm == "max" ?
+               contact.state_max_distance(alpha1, alpha2) :
+               contact.state_distance(alpha1, alpha2);
+    }
 
     /** Slip rate |v_T| of every contact node. */
     std::vector<double>

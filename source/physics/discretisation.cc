@@ -258,80 +258,6 @@ namespace rsfcycle
     }
 
 
-    template <int dim>
-    template <class Iterator>
-    void
-    Discretisation<dim>::add_absorbing_terms(
-      const Iterator         &cell,
-      const scenes::Material &material,
-      FullMatrix<double>     &cell_viscosity) const
-    {
-      const double c_s = std::sqrt(material.shear_modulus() / material.density);
-      const double c_p =
-        std::sqrt((material.bulk_modulus + 4. / 3. * material.shear_modulus()) /
-                  material.density);
-      // lumped (vertex quadrature): at each vertex the dashpot
-      // rho (c_p n n^T + c_s (I - n n^T)) couples the components of the
-      // vertex's own dofs only
-      for_each_boundary_face(
-        cell,
-        boundary_id::absorbing,
-        update_values | update_normal_vectors | update_JxW_values,
-        [&](const FEFaceValues<dim> *fe_face) {
-          for (const unsigned int q : fe_face->quadrature_point_indices())
-            {
-              const Tensor<1, dim> &n   = fe_face->normal_vector(q);
-              const double          JxW = fe_face->JxW(q);
-              for (const unsigned int i : fe_face->dof_indices())
-                for (const unsigned int j : fe_face->dof_indices())
-                  {
-                    const double phi_phi =
-                      fe_face->shape_value(i, q) * fe_face->shape_value(j, q);
-                    if (phi_phi == 0)
-                      continue;
-                    double impedance = material.density * c_s;
-                    if (!options.antiplane)
-                      {
-                        const unsigned int ci =
-                          fe.system_to_component_index(i).first;
-                        const unsigned int cj =
-                          fe.system_to_component_index(j).first;
-                        impedance =
-                          material.density *
-                          ((c_p - c_s) * n[ci] * n[cj] + (ci == cj ? c_s : 0.));
-                      }
-                    cell_viscosity(i, j) += impedance * phi_phi * JxW;
-                  }
-            }
-        });
-    }
-
-
-    template <int dim>
-    template <class Iterator, class FaceFunction>
-    void
-    Discretisation<dim>::for_each_boundary_face(
-      const Iterator          &cell,
-      const types::boundary_id id,
-      const UpdateFlags        flags,
-      const FaceFunction      &function) const
-    {
-      std::unique_ptr<FEFaceValues<dim>> fe_face;
-      for (const unsigned int f : cell->face_indices())
-        {
-          if (!cell->face(f)->at_boundary() ||
-              cell->face(f)->boundary_id() != id)
-            continue;
-          if (!fe_face)
-            fe_face = std::make_unique<FEFaceValues<dim>>(fe,
-                                                          QTrapezoid<dim - 1>(),
-                                                          flags);
-          fe_face->reinit(cell, f);
-          function(fe_face.get());
-        }
-    }
-
-
     /**
      * The antiplane model: w the out-of-plane displacement, stress
      * G grad w, viscous stress eta_s grad w; in-plane gravity does not load
@@ -362,48 +288,6 @@ namespace rsfcycle
                   material.shear_viscosity * grad_grad * JxW;
               }
         }
-    }
-
-
-    template <int dim>
-    template <class Iterator>
-    void
-    Discretisation<dim>::add_contact_terms(const Iterator         &cell,
-                                           const scenes::Material *material,
-                                           FullMatrix<double> *cell_viscosity,
-                                           Vector<double>     *cell_force) const
-    {
-      for_each_boundary_face(
-        cell,
-        boundary_id::contact,
-        update_values | update_quadrature_points | update_JxW_values,
-        [&](const FEFaceValues<dim> *fe_face) {
-          // lumped (vertex quadrature, as the friction's weights) on every
-          // tangential component (not y, the normal of the base in the
-          // rotated frame): eta w_i on the diagonal, tau_0 w_i in the force
-          for (const unsigned int q : fe_face->quadrature_point_indices())
-            {
-              const Point<dim> &x   = fe_face->quadrature_point(q);
-              const double      JxW = fe_face->JxW(q);
-              const double      eta_JxW =
-                cell_viscosity ? scene.radiation_damping(x, *material) * JxW :
-                                      0.;
-              const Tensor<1, dim> traction =
-                cell_force ? prestress(x) : Tensor<1, dim>();
-              for (const unsigned int i : fe_face->dof_indices())
-                {
-                  const unsigned int component =
-                    fe.system_to_component_index(i).first;
-                  if (component == normal_component())
-                    continue;
-                  const double phi = fe_face->shape_value(i, q);
-                  if (cell_viscosity)
-                    (*cell_viscosity)(i, i) += eta_JxW * phi * phi;
-                  if (cell_force)
-                    (*cell_force)(i) += traction[component] * phi * JxW;
-                }
-            }
-        });
     }
 
 

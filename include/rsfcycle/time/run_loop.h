@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <deal.II/base/timer.h>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -164,16 +163,20 @@ namespace rsfcycle
       std::unique_ptr<LoopState>            loop_state;
       std::unique_ptr<output::Recorder>     recorder;
       std::chrono::steady_clock::time_point wall_start, last_progress;
-      double                                t_start = 0;
       Sample                                last_sample;
       /**
-       * (wall seconds since the start, simulated time) of the progress
-       * reports of the last `eta_window` wall seconds: the ETA uses the
-       * recent rate, so that a cheap loading phase does not make it promise
-       * too little for the seismic cycles that follow.
+       * The ETA extrapolates the mean rate (wall seconds per simulated
+       * second) since the start (or resume) of the run until a whole
+       * seismic cycle has been run, from the first event that starts in
+       * this run to the next; then the mean rate since that first event, so
+       * that it averages over whole cycles: the mean since the start would
+       * include a cheap loading phase and promise too little, and the rate
+       * of the last minutes swings by orders of magnitude between events
+       * and the steps between them. (wall seconds, simulated time) of the
+       * start and of the first progress report after the first event.
        */
-      std::deque<std::pair<double, double>> recent_progress;
-      static constexpr double               eta_window = 300;
+      std::pair<double, double> eta_start, eta_first_event;
+      unsigned int              events_at_start = 0, events_at_first = 0;
     };
   } // namespace time
 } // namespace rsfcycle

@@ -148,7 +148,8 @@ namespace rsfcycle
       RunSummary            summary;
       wall_start = last_progress = std::chrono::steady_clock::now();
       auto last_checkpoint       = wall_start;
-      t_start                    = s.t;
+      eta_start                  = {0., s.t};
+      events_at_start = events_at_first = s.events.n_started();
       log << "*** Time loop to t = " << end_time << " s" << std::endl;
       {
         dealii::TimerOutput::Scope scope(timer, "Time stepping");
@@ -383,16 +384,20 @@ namespace rsfcycle
       last_progress = now;
       const double elapsed =
         std::chrono::duration<double>(now - wall_start).count();
-      recent_progress.emplace_back(elapsed, s.t);
-      while (recent_progress.size() > 2 &&
-             elapsed - recent_progress[1].first > eta_window)
-        recent_progress.pop_front();
-      const auto [wall_0, t_0] = recent_progress.front();
-      const double eta         = (s.t > t_0) ?
-                                   (elapsed - wall_0) / (s.t - t_0) * (end_time - s.t) :
-                                   elapsed / (s.t - t_start) * (end_time - s.t);
-      const auto  &counts      = last_sample.statistics;
-      const auto  &rates       = last_sample.slip_rates;
+      const unsigned int events = s.events.n_started();
+      if (events > events_at_start && events_at_first == events_at_start)
+        {
+          eta_first_event = {elapsed, s.t};
+          events_at_first = events;
+        }
+      const auto [wall_0, t_0] =
+        (events > events_at_first && events_at_first > events_at_start) ?
+          eta_first_event :
+          eta_start;
+      const double eta =
+        (s.t > t_0) ? (elapsed - wall_0) / (s.t - t_0) * (end_time - s.t) : 0.;
+      const auto  &counts = last_sample.statistics;
+      const auto  &rates  = last_sample.slip_rates;
       const double max_rate =
         rates.empty() ? 0. : *std::max_element(rates.begin(), rates.end());
       log << "*** Step " << s.step << ": t = " << std::setprecision(6) << s.t

@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <cholmod.h>
 #include <rsfcycle/solvers/sparse_cholesky.h>
 #include <stdexcept>
+#include <vector>
 
 namespace rsfcycle
 {
@@ -11,6 +13,11 @@ namespace rsfcycle
       cholmod_common  common;
       cholmod_factor *factor = nullptr;
       std::size_t     n      = 0;
+      // the upper triangle's pattern (column starts, row indices) that
+      // `factor` was analysed for: a matrix of the same pattern is only
+      // factorised numerically (the fill-reducing ordering and the
+      // supernodal structure are kept)
+      std::vector<int> analysed_p, analysed_i;
 
       Data()
       {
@@ -83,9 +90,21 @@ namespace rsfcycle
         }
       p[n] = k;
 
-      if (data->factor != nullptr)
-        cholmod_free_factor(&data->factor, &data->common);
-      data->factor = cholmod_analyze(S, &data->common);
+      const bool same_pattern =
+        data->factor != nullptr &&
+        std::equal(p,
+                   p + n + 1,
+                   data->analysed_p.begin(),
+                   data->analysed_p.end()) &&
+        std::equal(i, i + k, data->analysed_i.begin(), data->analysed_i.end());
+      if (!same_pattern)
+        {
+          if (data->factor != nullptr)
+            cholmod_free_factor(&data->factor, &data->common);
+          data->factor = cholmod_analyze(S, &data->common);
+          data->analysed_p.assign(p, p + n + 1);
+          data->analysed_i.assign(i, i + k);
+        }
       cholmod_factorize(S, data->factor, &data->common);
       const int status = data->common.status;
       cholmod_free_sparse(&S, &data->common);

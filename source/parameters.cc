@@ -302,7 +302,10 @@ namespace rsfcycle
                       "1e-10",
                       Double(1e-300, 1),
                       "Stop TNNMG when the energy norm of the update, relative "
-                      "to that of the iterate, is below this [-]");
+                      "to that of the iterate, is below this; with an "
+                      "adaptive step at most a tenth of Time stepping/"
+                      "Tolerance, or the step-size control sees the solver's "
+                      "error and takes needlessly small steps [-]");
     prm.declare_entry("Inner tolerance factor",
                       "0.3",
                       Double(0, 1),

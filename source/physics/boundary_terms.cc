@@ -127,49 +127,21 @@ namespace rsfcycle
     }
 
 
-    template void
-    Discretisation<2>::add_contact_terms(
-      const DoFHandler<2>::active_cell_iterator &,
-      const scenes::Material *,
-      FullMatrix<double> *,
-      Vector<double> *) const;
-    template void
-    Discretisation<2>::add_absorbing_terms(
-      const DoFHandler<2>::active_cell_iterator &,
-      const scenes::Material &,
-      FullMatrix<double> &) const;
-    template void
-    Discretisation<2>::add_contact_terms(
-      const DoFHandler<2>::level_cell_iterator &,
-      const scenes::Material *,
-      FullMatrix<double> *,
-      Vector<double> *) const;
-    template void
-    Discretisation<2>::add_absorbing_terms(
-      const DoFHandler<2>::level_cell_iterator &,
-      const scenes::Material &,
-      FullMatrix<double> &) const;
-    template void
-    Discretisation<3>::add_contact_terms(
-      const DoFHandler<3>::active_cell_iterator &,
-      const scenes::Material *,
-      FullMatrix<double> *,
-      Vector<double> *) const;
-    template void
-    Discretisation<3>::add_absorbing_terms(
-      const DoFHandler<3>::active_cell_iterator &,
-      const scenes::Material &,
-      FullMatrix<double> &) const;
-    template void
-    Discretisation<3>::add_contact_terms(
-      const DoFHandler<3>::level_cell_iterator &,
-      const scenes::Material *,
-      FullMatrix<double> *,
-      Vector<double> *) const;
-    template void
-    Discretisation<3>::add_absorbing_terms(
-      const DoFHandler<3>::level_cell_iterator &,
-      const scenes::Material &,
-      FullMatrix<double> &) const;
+    // both terms for the active and the level cells of both dimensions
+#define RSFCYCLE_BOUNDARY_TERMS(dim, Iterator)            \
+  template void Discretisation<dim>::add_contact_terms(   \
+    const DoFHandler<dim>::Iterator &,                    \
+    const scenes::Material *,                             \
+    FullMatrix<double> *,                                 \
+    Vector<double> *) const;                              \
+  template void Discretisation<dim>::add_absorbing_terms( \
+    const DoFHandler<dim>::Iterator &,                    \
+    const scenes::Material &,                             \
+    FullMatrix<double> &) const;
+    RSFCYCLE_BOUNDARY_TERMS(2, active_cell_iterator)
+    RSFCYCLE_BOUNDARY_TERMS(2, level_cell_iterator)
+    RSFCYCLE_BOUNDARY_TERMS(3, active_cell_iterator)
+    RSFCYCLE_BOUNDARY_TERMS(3, level_cell_iterator)
+#undef RSFCYCLE_BOUNDARY_TERMS
   } // namespace physics
 } // namespace rsfcycle

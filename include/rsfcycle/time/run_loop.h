@@ -172,10 +172,12 @@ namespace rsfcycle
        * that it averages over whole cycles: the mean since the start would
        * include a cheap loading phase and promise too little, and the rate
        * of the last minutes swings by orders of magnitude between events
-       * and the steps between them. (wall seconds, simulated time) of the
-       * start and of the first progress report after the first event.
+       * and the steps between them. The simulated time at the start;
+       * (wall seconds, simulated time) of the first progress report after
+       * the first event.
        */
-      std::pair<double, double> eta_start, eta_first_event;
+      double                    t_start = 0;
+      std::pair<double, double> eta_first_event;
       unsigned int              events_at_start = 0, events_at_first = 0;
     };
   } // namespace time

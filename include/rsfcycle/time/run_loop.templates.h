@@ -148,7 +148,7 @@ namespace rsfcycle
       RunSummary            summary;
       wall_start = last_progress = std::chrono::steady_clock::now();
       auto last_checkpoint       = wall_start;
-      eta_start                  = {0., s.t};
+      t_start                    = s.t;
       events_at_start = events_at_first = s.events.n_started();
       log << "*** Time loop to t = " << end_time << " s" << std::endl;
       {
@@ -393,7 +393,7 @@ namespace rsfcycle
       const auto [wall_0, t_0] =
         (events > events_at_first && events_at_first > events_at_start) ?
           eta_first_event :
-          eta_start;
+          std::pair<double, double>(0., t_start);
       const double eta =
         (s.t > t_0) ? (elapsed - wall_0) / (s.t - t_0) * (end_time - s.t) : 0.;
       const auto  &counts = last_sample.statistics;

@@ -18,8 +18,10 @@ first-event time, mean recurrence interval (of the events after the
 first `--skip` ones), median peak slip rate and surface slip, each with
 its difference from the first peer run (or from the first run given), and
 the first `--events` events one by one against that run's.
-Writes DIR/max-slip-rate.png (log10 max V over time) and
-DIR/surface-slip.png (surface slip over time).
+Writes DIR/max-slip-rate.png (log10 max V over time),
+DIR/surface-slip.png (surface slip over time) and DIR/recurrence.png
+(every interval at its event's start, and its difference in % from the
+first run's interval of the same number; the band is the issue's 0.5 %).
 """
 import argparse
 import os
@@ -187,6 +189,32 @@ def main():
         fig.tight_layout()
         fig.savefig(os.path.join(args.out, name), dpi=120)
         plt.close(fig)
+
+    # the recurrence: every interval at its event's start, and its
+    # difference from the reference's interval of the same number
+    fig, (ax, ax_diff) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    ref_interval = np.diff(ref_events[:, 0]) / YEAR
+    for r in runs:
+        ev = events(*r[1:], args.merge)
+        interval = np.diff(ev[:, 0]) / YEAR
+        line, = ax.plot(ev[1:, 0] / YEAR, interval, "o-", ms=3, lw=0.8,
+                        label=r[0])
+        n = min(len(interval), len(ref_interval))
+        if r is not runs[0] and n > 0:
+            ax_diff.plot(ev[1:n + 1, 0] / YEAR,
+                         100 * (interval[:n] / ref_interval[:n] - 1), "o-",
+                         ms=3, lw=0.8, color=line.get_color())
+    ax.set_ylabel("interval to the event before [yr]")
+    ax.legend()
+    ax_diff.axhspan(-0.5, 0.5, color="0.9")
+    ax_diff.axhline(0, color="0.5", lw=0.5)
+    ax_diff.set_ylabel("against %s [%%]" % runs[0][0])
+    ax_diff.set_xlabel("event start [yr]")
+    if args.tmax:
+        ax_diff.set_xlim(0, args.tmax)
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, "recurrence.png"), dpi=120)
+    plt.close(fig)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,94 @@
+#!/bin/bash
+# The peer run of SEAS BP1-FD with SCycle (README.md in this folder).
+#
+# Usage:
+#   SCYCLE_SRC=DIR benchmarks/seas-bp1/scycle/run.sh OUTDIR [make_input.py options]
+#
+# DIR: a git clone of https://github.com/kali-allison/SCycle. If its HEAD is
+# not the pinned commit, it is checked out at it (detached HEAD; refused if
+# the clone has local changes); scycle.patch (next to this script) is then
+# applied and source/main is built with Debian's PETSc:
+#   make PETSC_DIR=/usr/lib/petsc CLINKER=mpicxx CXXFLAGS="-DVERBOSE=1 -std=c++14 -Wall -g" main
+# (VERBOSE=1 prints one line per time step, which stats.py reads). The build
+# needs the Debian packages petsc-dev and libopenmpi-dev; make_input.py needs
+# python3-numpy, stats.py python3-h5py; the timing needs the package time.
+# This script installs nothing.
+#
+# Runs one process on one core (no mpirun: MPI starts as a singleton;
+# OMP_NUM_THREADS=OPENBLAS_NUM_THREADS=1) in OUTDIR: bp1fd.in and ICs/ from
+# make_input.py (defaults: the 50 m run, three events), SCycle's output in
+# OUTDIR/output, its screen output in log.txt, /usr/bin/time -v in time.txt,
+# and the event table of stats.py in events.md.
+#
+# PETSC_OPTIONS gets -mat_mumps_icntl_14 100 (+100 % MUMPS workspace: without
+# it the 50 m factorisation failed silently and SCycle stopped on a stress of
+# -4e286) and -mat_mumps_icntl_4 1 (MUMPS errors in the log). If OPENBLAS_LIB
+# names a folder with a serial OpenBLAS libblas.so.3 (e.g. unpacked from the
+# Debian package libopenblas0-serial with dpkg -x), it is put first in
+# LD_LIBRARY_PATH: MUMPS factorises 4x faster; the solves do not change.
+set -euo pipefail
+
+SCYCLE_COMMIT=74a132f6d280f550dd7469faa7b1039a52b24156
+HERE=$(cd "$(dirname "$0")" && pwd)
+PYTHON=${PYTHON:-/usr/bin/python3}
+
+die() {
+    echo "run.sh: $*" >&2
+    exit 1
+}
+
+[ $# -ge 1 ] || die "usage: SCYCLE_SRC=DIR run.sh OUTDIR [make_input.py options]"
+case $1 in -h | --help)
+    sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'
+    exit 0
+    ;;
+esac
+outdir=$1
+shift
+[ -n "${SCYCLE_SRC:-}" ] || die "set SCYCLE_SRC to a clone of https://github.com/kali-allison/SCycle"
+[ -f "$SCYCLE_SRC/source/Makefile" ] || die "$SCYCLE_SRC is not an SCycle clone (no source/Makefile)"
+[ -x /usr/bin/time ] || die "/usr/bin/time not found (Debian package time)"
+[ ! -e "$outdir/log.txt" ] || die "$outdir has a run already (log.txt)"
+SCYCLE_SRC=$(cd "$SCYCLE_SRC" && pwd)
+
+# --- SCycle at the pinned commit, with scycle.patch
+head=$(git -C "$SCYCLE_SRC" rev-parse HEAD)
+exe=$SCYCLE_SRC/source/main
+if [ "$head" != "$SCYCLE_COMMIT" ]; then
+    [ -z "$(git -C "$SCYCLE_SRC" status --porcelain --untracked-files=no)" ] ||
+        die "$SCYCLE_SRC has local changes; not checking out $SCYCLE_COMMIT"
+    echo "checking out SCycle $SCYCLE_COMMIT in $SCYCLE_SRC (was $head)"
+    git -C "$SCYCLE_SRC" checkout --quiet "$SCYCLE_COMMIT"
+    rm -f "$exe"
+fi
+if git -C "$SCYCLE_SRC" apply --check "$HERE/scycle.patch" 2> /dev/null; then
+    echo "applying scycle.patch"
+    git -C "$SCYCLE_SRC" apply "$HERE/scycle.patch"
+    rm -f "$exe"
+elif ! git -C "$SCYCLE_SRC" apply --check --reverse "$HERE/scycle.patch" 2> /dev/null; then
+    die "scycle.patch neither applies to nor is applied in $SCYCLE_SRC"
+fi
+mkdir -p "$outdir"
+outdir=$(cd "$outdir" && pwd)
+if [ ! -x "$exe" ]; then
+    [ -d /usr/lib/petsc ] || die "/usr/lib/petsc not found: install the Debian package petsc-dev"
+    echo "building SCycle in $SCYCLE_SRC/source (log: $outdir/build.log)"
+    make -C "$SCYCLE_SRC/source" PETSC_DIR=/usr/lib/petsc CLINKER=mpicxx \
+        CXXFLAGS="-DVERBOSE=1 -std=c++14 -Wall -g" main > "$outdir/build.log" 2>&1 ||
+        die "the build failed, see $outdir/build.log"
+fi
+echo "SCycle $(git -C "$SCYCLE_SRC" rev-parse HEAD) + scycle.patch: $exe"
+
+# --- the run
+"$PYTHON" "$HERE/make_input.py" "$outdir" "$@" > "$outdir/gen.txt"
+export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1
+export PETSC_OPTIONS="-mat_mumps_icntl_14 100 -mat_mumps_icntl_4 1"
+if [ -n "${OPENBLAS_LIB:-}" ]; then
+    export LD_LIBRARY_PATH=$OPENBLAS_LIB${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+fi
+echo "start $(date -Is)" | tee "$outdir/timing.txt"
+(cd "$outdir" && /usr/bin/time -v "$exe" bp1fd.in > log.txt 2> time.txt) ||
+    die "SCycle failed in $outdir (log.txt, time.txt there)"
+echo "end   $(date -Is)" | tee -a "$outdir/timing.txt"
+grep -E "Elapsed|User time|Maximum resident" "$outdir/time.txt"
+"$PYTHON" "$HERE/stats.py" "$outdir" | tee "$outdir/events.md"

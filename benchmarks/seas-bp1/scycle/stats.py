@@ -8,7 +8,7 @@ usage: stats.py RUNDIR [--vthr V] [--csv SERIES.csv] [--seas DIR]
     the profile records), so that compare.py reduces SCycle's run exactly
     as it reduces rsfcycle's.
   --seas: SEAS-style files that plot_bp1.py --run reads, from the profile
-    records: global.dat (t, log10 max V), slip.dat (slip along depth,
+    records: global.dat (t, log10 max V), slip.dat (slip along depth 0 - 40 km,
     every 5 years between events and every second during them),
     fltst_dpXXX at the BP1 station depths (t, slip, log10 V, shear stress,
     log10 state with theta = D_c/V_0 exp((psi - f_0)/b)), linear in depth
@@ -136,12 +136,14 @@ if args.seas:
             fh.write("%.10g %.10g\n" % (t1[k], np.log10(vmax1[k])))
     with open(os.path.join(args.seas, "slip.dat"), "w") as fh:
         header(fh, "on fault, slip profiles", "t max_slip_rate slip")
-        fh.write("0 0 " + " ".join("%.6g" % (1000 * z) for z in zf) + "\n")
+        # the rate-and-state part (0 - 40 km), as rsfcycle's slip.dat
+        onf = zf <= 40.0 + 1e-6
+        fh.write("0 0 " + " ".join("%.6g" % (1000 * z) for z in zf[onf]) + "\n")
         last = -1e300
         for k in range(len(t1)):
             if t1[k] - last >= (1.0 if vmax1[k] > 1e-3 else 5 * YR):
                 fh.write("%.10g %.6g " % (t1[k], np.log10(vmax1[k])))
-                fh.write(" ".join("%.6g" % x for x in slip[k]) + "\n")
+                fh.write(" ".join("%.6g" % x for x in slip[k][onf]) + "\n")
                 last = t1[k]
     theta = DC / V0 * np.exp((psi - F0) / B)
     for d in DEPTHS_KM:

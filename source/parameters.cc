@@ -1,4 +1,5 @@
 #include <rsfcycle/format.h>
+#include <rsfcycle/friction/laws.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/registry.h>
 #include <rsfcycle/solvers/tnnmg.h>
@@ -239,8 +240,10 @@ namespace rsfcycle
     prm.enter_subsection("Solver");
     prm.declare_entry("State law",
                       "ageing",
-                      Selection("ageing|slip"),
-                      "State evolution: ageing law (4) or slip law");
+                      Selection(friction::law_names()),
+                      "The friction law: the regularised coefficient (2) "
+                      "with the state evolving by the ageing law (4) or the "
+                      "slip law");
     prm.declare_entry("Coupling",
                       "fixed-point",
                       Selection("fixed-point|explicit"),
@@ -332,7 +335,7 @@ namespace rsfcycle
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    state_law             = prm.get("State law");
+    law                   = friction::make_law(prm.get("State law"));
     coupling              = prm.get("Coupling");
     dynamics              = prm.get("Dynamics");
     theta                 = prm.get_double("Theta");

@@ -300,6 +300,7 @@ namespace rsfcycle
       parameters.run.output_directory,
       discretisation,
       contact,
+      *parameters.solver.law,
       scene.convergence_rate(),
       scene.output_frame());
   }
@@ -408,10 +409,10 @@ namespace rsfcycle
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
             const auto &p = nodes[k].params;
-            stresses.push_back(
-              nodes[k].normal_force / nodes[k].weight *
-                friction::friction_coefficient(p, state.alpha[k], rates[k]) +
-              (rates[k] > 0 ? p.cohesion : 0.));
+            stresses.push_back(nodes[k].normal_force / nodes[k].weight *
+                                 parameters.solver.law->friction_coefficient(
+                                   p, state.alpha[k], rates[k]) +
+                               (rates[k] > 0 ? p.cohesion : 0.));
             log10_states.push_back(p.log_theta(state.alpha[k]) / std::log(10.));
           }
         sample.shear_stresses    = contact.gather(stresses);
@@ -512,8 +513,8 @@ namespace rsfcycle
         << discretisation.gravity_iterations << " iterations\n";
     log << "Solver: " << parameters.solver.coupling << " coupling, "
         << parameters.solver.linear_correction << " linear correction, "
-        << parameters.solver.state_law << " law, " << parameters.solver.dynamics
-        << std::endl;
+        << parameters.solver.law->name() << " law, "
+        << parameters.solver.dynamics << std::endl;
     if (const auto *mg =
           dynamic_cast<const solvers::MultigridCorrection<dim> *>(
             linear_correction.get()))

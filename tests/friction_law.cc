@@ -14,7 +14,7 @@
 
 #include <cmath>
 #include <limits>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/ageing_law.h>
 
 using namespace rsfcycle::friction;
 
@@ -22,6 +22,8 @@ int
 main()
 {
   initlog(10);
+  // the coefficient (2) is the same for every state law
+  const AgeingLaw law;
 
   Parameters p;
   p.a       = 0.002;
@@ -38,18 +40,18 @@ main()
         const double v_theta =
           p.v_star * std::exp(-(p.mu_star + p.b * alpha) / p.a);
         const double plain = p.a * std::asinh(V / (2 * v_theta));
-        const double ours  = friction_coefficient(p, alpha, V);
+        const double ours  = law.friction_coefficient(p, alpha, V);
         max_rel            = std::max(max_rel, std::abs(ours - plain) / plain);
       }
   dealii::deallog << "max relative difference to plain asinh < 1e-12: "
                   << (max_rel < 1e-12 ? "yes" : "no") << std::endl;
 
   dealii::deallog << "mu(V*, alpha=0) - mu* = "
-                  << friction_coefficient(p, 0., p.v_star) - p.mu_star
+                  << law.friction_coefficient(p, 0., p.v_star) - p.mu_star
                   << std::endl;
   for (const double V : {1e-9, 1e-6, 50e-6, 1e-3, 1e-1})
     dealii::deallog << "V = " << V << ": mu_ss - (mu* + (a-b) log(V/V*)) = "
-                    << steady_state_friction_coefficient(p, V) -
+                    << law.steady_state_friction_coefficient(p, V) -
                          (p.mu_star + (p.a - p.b) * std::log(V / p.v_star))
                     << std::endl;
 
@@ -66,24 +68,25 @@ main()
       bool   monotone = true, finite = true;
       for (const double V : {0., 1e-300, 1e-200, 1e-12, 1e-6, 1., 10.})
         {
-          const double mu  = friction_coefficient(q, alpha, V);
-          const double dmu = friction_coefficient_derivative(q, alpha, V);
+          const double mu  = law.friction_coefficient(q, alpha, V);
+          const double dmu = law.friction_coefficient_derivative(q, alpha, V);
           finite = finite && std::isfinite(mu) && std::isfinite(dmu) && dmu > 0;
           monotone = monotone && mu >= previous;
           previous = mu;
         }
       dealii::deallog << "alpha = " << alpha
-                      << ": mu(0) = " << friction_coefficient(q, alpha, 0.)
+                      << ": mu(0) = " << law.friction_coefficient(q, alpha, 0.)
                       << ", mu(10 m/s) = "
-                      << friction_coefficient(q, alpha, 10.) << ", mu'(0) = "
-                      << friction_coefficient_derivative(q, alpha, 0.)
+                      << law.friction_coefficient(q, alpha, 10.)
+                      << ", mu'(0) = "
+                      << law.friction_coefficient_derivative(q, alpha, 0.)
                       << ", finite: " << (finite ? "yes" : "no")
                       << ", monotone: " << (monotone ? "yes" : "no")
                       << std::endl;
     }
   // At 10 m/s the classical law is accurate: mu = mu* + a log(V/V*) + b alpha
   dealii::deallog << "mu(10 m/s, alpha = 0) - classical = "
-                  << friction_coefficient(q, 0., 10.) -
+                  << law.friction_coefficient(q, 0., 10.) -
                        (q.mu_star + q.a * std::log(10. / q.v_star))
                   << std::endl;
 
@@ -92,10 +95,10 @@ main()
   for (const double V : {1e-154, 1e-152, 1e-9, 50e-6, 1.})
     {
       const double h  = 1e-6 * V;
-      const double fd = (friction_coefficient(p, 0., V + h) -
-                         friction_coefficient(p, 0., V - h)) /
+      const double fd = (law.friction_coefficient(p, 0., V + h) -
+                         law.friction_coefficient(p, 0., V - h)) /
                         (2 * h);
-      const double exact = friction_coefficient_derivative(p, 0., V);
+      const double exact = law.friction_coefficient_derivative(p, 0., V);
       max_derivative_error =
         std::max(max_derivative_error, std::abs(fd - exact) / exact);
     }

@@ -14,7 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/ageing_law.h>
+#include <rsfcycle/friction/local_solve.h>
 
 using namespace rsfcycle::friction;
 
@@ -61,7 +62,9 @@ main()
 {
   initlog(8);
 
-  NodePotential stable; // rate strengthening, Table 1
+  const AgeingLaw ageing;
+  NodePotential   stable; // rate strengthening, Table 1
+  stable.law            = &ageing;
   stable.params.a       = 0.02;
   stable.params.b       = 0.005;
   stable.normal_force   = 3.0;  // N/m

@@ -9,7 +9,8 @@
 #include "tests.h"
 
 #include <cmath>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/ageing_law.h>
+#include <rsfcycle/friction/slip_law.h>
 
 using namespace rsfcycle::friction;
 
@@ -17,7 +18,9 @@ int
 main()
 {
   initlog(10);
-  Parameters p;
+  const AgeingLaw ageing;
+  const SlipLaw   slip;
+  Parameters      p;
   p.v_star = 50e-6;
   p.L      = 22.5e-6;
 
@@ -29,7 +32,7 @@ main()
     {
       double alpha = alpha0;
       for (int n = 0; n < 100; ++n)
-        alpha = update_state(StateLaw::ageing, p, alpha, V, tau);
+        alpha = ageing.update_state(p, alpha, V, tau);
       // theta0 e^{-x} + (L/V)(1 - e^{-x}), x = V t/L, written so that it
       // stays exact for tiny V (L/V (1 - e^{-x}) = t (1 - e^{-x})/x)
       const double x = V * t_end / p.L;
@@ -47,7 +50,7 @@ main()
     {
       double alpha = alpha0;
       for (int n = 0; n < 100; ++n)
-        alpha = update_state(StateLaw::slip, p, alpha, V, tau);
+        alpha = slip.update_state(p, alpha, V, tau);
       double alpha_exact = alpha0;
       if (V > 0)
         {
@@ -65,10 +68,8 @@ main()
   const double V  = 1e-4;
   const double as = std::log(p.v_star / V);
   dealii::deallog << "steady state stays: "
-                  << update_state(StateLaw::ageing, p, as, V, 10.) - as
-                  << std::endl;
+                  << ageing.update_state(p, as, V, 10.) - as << std::endl;
   // Very long step: alpha -> log(V*/V).
   dealii::deallog << "long step reaches steady state: "
-                  << update_state(StateLaw::ageing, p, 5., V, 1e3) - as
-                  << std::endl;
+                  << ageing.update_state(p, 5., V, 1e3) - as << std::endl;
 }

@@ -17,8 +17,10 @@
 //     (a - b) log(V2/V1). Errors are printed as yes/no against 1e-10.
 #include "tests.h"
 
+#include <array>
 #include <cmath>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/ageing_law.h>
+#include <rsfcycle/friction/slip_law.h>
 
 using namespace rsfcycle::friction;
 
@@ -44,7 +46,7 @@ namespace
 
   /** Step the state over a slip d at constant V in steps of 0.05 L. */
   double
-  slide(const StateLaw    law,
+  slide(const Law        &law,
         const Parameters &p,
         double            alpha,
         const double      V,
@@ -53,7 +55,7 @@ namespace
     const unsigned int n = static_cast<unsigned int>(std::round(d / p.L * 20));
     const double       tau = d / V / n;
     for (unsigned int i = 0; i < n; ++i)
-      alpha = update_state(law, p, alpha, V, tau);
+      alpha = law.update_state(p, alpha, V, tau);
     return alpha;
   }
 } // namespace
@@ -64,37 +66,40 @@ main()
   initlog(10);
   const Parameters p = parameters();
   using dealii::deallog;
+  const AgeingLaw                  ageing;
+  const SlipLaw                    slip;
+  const std::array<const Law *, 2> laws = {{&ageing, &slip}};
 
   deallog << "1. steady state at constant V" << std::endl;
-  for (const StateLaw law : {StateLaw::ageing, StateLaw::slip})
+  for (const Law *law : laws)
     for (const double V : {1e-9, 1e-6, 1e-3, 1.})
       for (const double alpha0 : {-5., 5.})
         {
-          const double alpha = slide(law, p, alpha0, V, 40 * p.L);
-          const double mu    = friction_coefficient(p, alpha, V);
+          const double alpha = slide(*law, p, alpha0, V, 40 * p.L);
+          const double mu    = law->friction_coefficient(p, alpha, V);
           const double mu_ss = p.mu_star + (p.a - p.b) * std::log(V / p.v_star);
           // ageing: theta - L/V decays like e^{-d/L}; slip law: log(theta
           // V/L) decays like e^{-d/L}: after 40 L both are at e^{-40} ~ 4e-18
-          deallog << (law == StateLaw::ageing ? "ageing" : "slip")
-                  << " V = " << V << " alpha0 = " << alpha0 << ": mu = " << mu
-                  << ", |mu - mu_ss| < 1e-10: "
+          deallog << law->name() << " V = " << V << " alpha0 = " << alpha0
+                  << ": mu = " << mu << ", |mu - mu_ss| < 1e-10: "
                   << yes_no(std::abs(mu - mu_ss) < 1e-10)
                   << ", steady_state_friction_coefficient agrees: "
-                  << yes_no(std::abs(steady_state_friction_coefficient(p, V) -
-                                     mu_ss) < 1e-12)
+                  << yes_no(
+                       std::abs(law->steady_state_friction_coefficient(p, V) -
+                                mu_ss) < 1e-12)
                   << std::endl;
         }
 
   deallog << "2. velocity step" << std::endl;
-  for (const StateLaw law : {StateLaw::ageing, StateLaw::slip})
+  for (const Law *law : laws)
     for (const double ratio : {10., 0.1})
       {
         const double V1 = 1e-6, V2 = ratio * V1;
         const double alpha1 = std::log(p.v_star / V1); // steady at V1
-        const double mu1    = friction_coefficient(p, alpha1, V1);
-        const double direct = friction_coefficient(p, alpha1, V2) - mu1;
-        deallog << (law == StateLaw::ageing ? "ageing" : "slip")
-                << " V2/V1 = " << ratio << ": direct effect / (a log(V2/V1)) = "
+        const double mu1    = law->friction_coefficient(p, alpha1, V1);
+        const double direct = law->friction_coefficient(p, alpha1, V2) - mu1;
+        deallog << law->name() << " V2/V1 = " << ratio
+                << ": direct effect / (a log(V2/V1)) = "
                 << direct / (p.a * std::log(ratio)) << ", |error| < 1e-10: "
                 << yes_no(std::abs(direct - p.a * std::log(ratio)) < 1e-10)
                 << std::endl;
@@ -103,11 +108,11 @@ main()
         bool   all_ok = true;
         for (const double d_over_L : {0.5, 1., 2., 5., 20.})
           {
-            alpha  = slide(law, p, alpha, V2, (d_over_L - d_done) * p.L);
+            alpha  = slide(*law, p, alpha, V2, (d_over_L - d_done) * p.L);
             d_done = d_over_L;
             const double theta1 = p.L / p.v_star * std::exp(alpha1);
             double       alpha_exact;
-            if (law == StateLaw::ageing)
+            if (law == &ageing)
               alpha_exact = std::log(
                 (p.L / V2 + (theta1 - p.L / V2) * std::exp(-d_over_L)) *
                 p.v_star / p.L);
@@ -117,7 +122,7 @@ main()
             // the unregularised law at the exact state
             const double mu_exact =
               p.mu_star + p.a * std::log(V2 / p.v_star) + p.b * alpha_exact;
-            const double mu = friction_coefficient(p, alpha, V2);
+            const double mu = law->friction_coefficient(p, alpha, V2);
             const bool   ok = std::abs(mu - mu_exact) < 1e-10;
             all_ok          = all_ok && ok;
             deallog << "  slip " << d_over_L
@@ -125,7 +130,7 @@ main()
                     << ", |mu - closed form| < 1e-10: " << yes_no(ok)
                     << std::endl;
           }
-        const double change = friction_coefficient(p, alpha, V2) - mu1;
+        const double change = law->friction_coefficient(p, alpha, V2) - mu1;
         deallog << "  after 20 L: change / ((a - b) log(V2/V1)) = "
                 << change / ((p.a - p.b) * std::log(ratio)) << std::endl;
       }

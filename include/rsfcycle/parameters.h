@@ -2,6 +2,8 @@
 #define rsfcycle_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <memory>
+#include <rsfcycle/friction/laws.h>
 #include <rsfcycle/output/seas_parameters.h>
 #include <rsfcycle/time/theta_scheme.h>
 #include <string>
@@ -75,20 +77,21 @@ namespace rsfcycle
   /** Subsection "Solver": rate/state coupling, TNNMG, linear correction. */
   struct SolverParameters
   {
-    std::string  state_law                  = "ageing";
-    std::string  coupling                   = "fixed-point";
-    std::string  dynamics                   = "dynamic";
-    double       theta                      = 0.5;
-    double       fixed_point_tolerance      = 1e-5;
-    unsigned int max_fixed_point_iterations = 20;
-    std::string  linear_correction          = "multigrid";
-    unsigned int smoothing_steps            = 3;
-    unsigned int correction_cycles          = 1;
-    double       correction_tolerance       = 1e-2;
-    double       tnnmg_tolerance            = 1e-10;
-    double       inner_tolerance_factor     = 0.3;
-    unsigned int max_tnnmg_iterations       = 100;
-    double       truncation_ratio           = 1e10;
+    /** The friction law of `State law` (friction/laws.h). */
+    std::shared_ptr<const friction::Law> law = friction::make_law("ageing");
+    std::string                          coupling              = "fixed-point";
+    std::string                          dynamics              = "dynamic";
+    double                               theta                 = 0.5;
+    double                               fixed_point_tolerance = 1e-5;
+    unsigned int                         max_fixed_point_iterations = 20;
+    std::string                          linear_correction      = "multigrid";
+    unsigned int                         smoothing_steps        = 3;
+    unsigned int                         correction_cycles      = 1;
+    double                               correction_tolerance   = 1e-2;
+    double                               tnnmg_tolerance        = 1e-10;
+    double                               inner_tolerance_factor = 0.3;
+    unsigned int                         max_tnnmg_iterations   = 100;
+    double                               truncation_ratio       = 1e10;
 
     static void
     declare_parameters(ParameterHandler &prm);

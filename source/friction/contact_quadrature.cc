@@ -228,11 +228,12 @@ namespace rsfcycle
 
     template <int dim>
     std::vector<NodePotential>
-    ContactQuadrature<dim>::potentials() const
+    ContactQuadrature<dim>::potentials(const Law &law) const
     {
       std::vector<NodePotential> result(node_info.size());
       for (unsigned int k = 0; k < node_info.size(); ++k)
         {
+          result[k].law          = &law;
           result[k].params       = node_info[k].params;
           result[k].normal_force = node_info[k].normal_force;
           result[k].cohesion_force =

@@ -136,11 +136,13 @@ namespace rsfcycle
       const std::string                           &dir,
       const physics::Discretisation<dim>          &discretisation,
       const friction::ContactQuadrature<dim>      &contact,
+      const friction::Law                         &law,
       const double                                 convergence_rate,
       const std::pair<Tensor<2, dim>, Point<dim>> &frame)
       : dir(dir)
       , discretisation(discretisation)
       , contact(contact)
+      , law(law)
       , v0(convergence_rate)
       , frame(frame)
     {}
@@ -170,9 +172,7 @@ namespace rsfcycle
           field[theta].local_element(dof) =
             std::exp(info.params.log_theta(state.alpha[k]));
           field[mu].local_element(dof) =
-            friction::friction_coefficient(info.params,
-                                           state.alpha[k],
-                                           rates[k]);
+            law.friction_coefficient(info.params, state.alpha[k], rates[k]);
           field[traction].local_element(dof) = state.shear_traction[k];
           field[normal_stress].local_element(dof) =
             info.normal_force / info.weight;

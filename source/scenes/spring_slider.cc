@@ -119,7 +119,7 @@ namespace rsfcycle
     SpringSlider::SpringSlider(const Parameters &parameters,
                                ParameterHandler &prm)
       : parameters(parameters)
-      , state_law(friction::state_law_from_name(parameters.solver.state_law))
+      , law(*parameters.solver.law)
       , coupling(parameters.solver.coupling == "explicit" ?
                    time::Coupling::explicit_decoupling :
                    time::Coupling::fixed_point)
@@ -153,10 +153,10 @@ namespace rsfcycle
           "Spring slider: Mass, Stiffness and Radiation damping are all 0");
 
       // Equilibrium at t = 0: no acceleration.
-      prestress = normal_stress * friction::friction_coefficient(friction,
-                                                                 initial_alpha,
-                                                                 initial_rate) +
-                  (initial_rate > 0 ? cohesion : 0.) + damping * initial_rate;
+      prestress =
+        normal_stress *
+          law.friction_coefficient(friction, initial_alpha, initial_rate) +
+        (initial_rate > 0 ? cohesion : 0.) + damping * initial_rate;
     }
 
 
@@ -177,9 +177,7 @@ namespace rsfcycle
     double
     SpringSlider::friction_coefficient(const State &s) const
     {
-      return friction::friction_coefficient(friction,
-                                            s.alpha,
-                                            std::abs(s.velocity));
+      return law.friction_coefficient(friction, s.alpha, std::abs(s.velocity));
     }
 
 
@@ -220,6 +218,7 @@ namespace rsfcycle
            0.);
 
       friction::NodePotential phi;
+      phi.law            = &law;
       phi.params         = friction;
       phi.normal_force   = normal_stress;
       phi.cohesion_force = cohesion;
@@ -245,7 +244,7 @@ namespace rsfcycle
         [&](const double v_new, const double weight_new, double &a) {
           const double V =
             std::abs((1 - weight_new) * old.velocity + weight_new * v_new);
-          a = friction::update_state(state_law, friction, old.alpha, V, tau);
+          a = law.update_state(friction, old.alpha, V, tau);
         },
         [](const double a1, const double a2) { return std::abs(a1 - a2); });
       if (!iterations)
@@ -319,7 +318,7 @@ namespace rsfcycle
             << std::endl;
       else
         log << "Solver: " << parameters.solver.coupling << " coupling, "
-            << parameters.solver.state_law << " law" << std::endl;
+            << law.name() << " law" << std::endl;
     }
 
 

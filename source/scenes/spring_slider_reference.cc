@@ -13,39 +13,6 @@ namespace rsfcycle
 {
   namespace scenes
   {
-    namespace
-    {
-      /** d alpha / dt of the state law at slip rate V >= 0. */
-      double
-      state_rate(const friction::StateLaw    law,
-                 const friction::Parameters &p,
-                 const double                alpha,
-                 const double                V)
-      {
-        if (law == friction::StateLaw::ageing)
-          return p.v_star / p.L * std::exp(-alpha) - V / p.L;
-        return V > 0 ? -V / p.L * (alpha + std::log(V / p.v_star)) : 0.;
-      }
-
-      /**
-       * s = 1/sqrt(1 + z^-2), z = V/(2 V_theta): with it
-       * V dmu/dV = a s and dmu/dalpha = b s (in log space, no overflow).
-       */
-      double
-      friction_sensitivity(const friction::Parameters &p,
-                           const double                alpha,
-                           const double                V)
-      {
-        if (!(V > 0))
-          return 0;
-        const double log_z = std::log(V / 2) - p.log_v_theta(alpha);
-        if (log_z > 300)
-          return 1;
-        return 1 / std::sqrt(1 + std::exp(-2 * log_z));
-      }
-    } // namespace
-
-
     /** See make_arkode_reference(). */
     class ArkodeReference : public time::Controller<SpringSlider::State>
     {
@@ -183,9 +150,9 @@ namespace rsfcycle
       const SpringSlider &s  = slider;
       const double        V  = dynamic ? y[1] : std::exp(y[1]);
       const double        Va = std::abs(V);
-      const double        da = state_rate(s.state_law, s.friction, y[2], Va);
-      const double mu = friction::friction_coefficient(s.friction, y[2], Va);
-      const double tau =
+      const double        da = s.law.state_rate(s.friction, y[2], Va);
+      const double        mu = s.law.friction_coefficient(s.friction, y[2], Va);
+      const double        tau =
         s.prestress + s.stiffness * (s.load_point_displacement(t) - y[0]);
       dy[0] = V;
       dy[2] = da;
@@ -195,10 +162,11 @@ namespace rsfcycle
       else
         {
           // d/dt of tau0 + k(u_lp - delta) = N mu(V, alpha) + eta V
-          const double sens = friction_sensitivity(s.friction, y[2], Va);
-          dy[1]             = (s.stiffness * (s.load_point_velocity(t) - V) -
-                   s.normal_stress * s.friction.b * sens * da) /
-                  (s.normal_stress * s.friction.a * sens + s.damping * V);
+          // V dmu/dV and dmu/dalpha
+          const auto sens = s.law.sensitivities(s.friction, y[2], Va);
+          dy[1]           = (s.stiffness * (s.load_point_velocity(t) - V) -
+                   s.normal_stress * sens[1] * da) /
+                  (s.normal_stress * sens[0] + s.damping * V);
         }
       return std::isfinite(dy[0]) && std::isfinite(dy[1]) &&
                  std::isfinite(dy[2]) ?

@@ -20,7 +20,7 @@ namespace rsfcycle
       , contact(contact)
       , tnnmg(tnnmg)
       , scheme(solver.scheme())
-      , state_law(friction::state_law_from_name(solver.state_law))
+      , law(*solver.law)
       , along_base(std::move(along_base))
     {}
 
@@ -68,7 +68,7 @@ namespace rsfcycle
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
 
-      std::vector<friction::NodePotential> potentials = contact.potentials();
+      std::vector<friction::NodePotential> potentials = contact.potentials(law);
       solvers::SpatialProblem              problem;
       problem.local_A     = &A;
       problem.assembled_A = [this, coefficients]() -> const auto &
@@ -217,11 +217,10 @@ namespace rsfcycle
               vm[l]          = (1 - weight_new) * old.v.local_element(dof) +
                       weight_new * v_new.local_element(dof);
             }
-          alpha[k] = friction::update_state(state_law,
-                                            contact.nodes()[k].params,
-                                            old.alpha[k],
-                                            std::hypot(vm[0], vm[1]),
-                                            tau);
+          alpha[k] = law.update_state(contact.nodes()[k].params,
+                                      old.alpha[k],
+                                      std::hypot(vm[0], vm[1]),
+                                      tau);
         }
     }
 

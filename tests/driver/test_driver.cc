@@ -282,10 +282,11 @@ namespace
             << yes_no((events.back().end - events.back().start) < 0.05 * T)
             << "\n";
       }
-    const auto  &p     = slider.friction_parameters();
-    const double V     = summary.final_state.velocity;
-    const double mu_ss = rsfcycle::friction::steady_state_friction_coefficient(
-      p, slider.load_point_velocity(summary.final_time));
+    const auto  &p = slider.friction_parameters();
+    const double V = summary.final_state.velocity;
+    const double mu_ss =
+      slider.friction_law().steady_state_friction_coefficient(
+        p, slider.load_point_velocity(summary.final_time));
     out << "final log10(V / v0): " << std::log10(std::abs(V) / v0) << "\n";
     out << "final slip / (v0 t): "
         << summary.final_state.slip / (v0 * summary.final_time) << "\n";

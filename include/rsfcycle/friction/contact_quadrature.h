@@ -9,7 +9,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/local_solve.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <vector>
@@ -91,11 +91,12 @@ namespace rsfcycle
       tangential_displacement(const la::Vector &u) const;
 
       /**
-       * The node potentials phi_i of (13) with the state alpha not yet set
-       * (the cohesion force w_i C_i from the node's parameters).
+       * The node potentials phi_i of (13) of the friction law `law` with the
+       * state alpha not yet set (the cohesion force w_i C_i from the node's
+       * parameters).
        */
       std::vector<NodePotential>
-      potentials() const;
+      potentials(const Law &law) const;
 
       const std::vector<NodeInfo> &
       nodes() const

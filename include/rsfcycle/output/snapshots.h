@@ -29,6 +29,7 @@ namespace rsfcycle
         const std::string                      &dir,
         const physics::Discretisation<dim>     &discretisation,
         const friction::ContactQuadrature<dim> &contact,
+        const friction::Law                    &law,
         double                                  convergence_rate,
         const std::pair<dealii::Tensor<2, dim>, dealii::Point<dim>> &frame);
 
@@ -70,6 +71,7 @@ namespace rsfcycle
       const std::string                       dir;
       const physics::Discretisation<dim>     &discretisation;
       const friction::ContactQuadrature<dim> &contact;
+      const friction::Law                    &law;
       const double                            v0;
       /** Q and c of the output frame. */
       const std::pair<dealii::Tensor<2, dim>, dealii::Point<dim>> frame;

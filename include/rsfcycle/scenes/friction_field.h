@@ -6,7 +6,7 @@
 #include <deal.II/base/point.h>
 #include <memory>
 #include <optional>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/law.h>
 #include <string>
 
 namespace rsfcycle

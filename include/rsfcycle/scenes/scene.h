@@ -10,7 +10,7 @@
 #include <deal.II/grid/tria.h>
 #include <functional>
 #include <memory>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/law.h>
 #include <string>
 #include <utility>
 #include <vector>

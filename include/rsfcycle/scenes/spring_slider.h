@@ -5,7 +5,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/local_solve.h>
 #include <rsfcycle/output/events.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/time/controller.h>
@@ -147,6 +147,13 @@ namespace rsfcycle
       double
       friction_coefficient(const State &s) const;
 
+      /** The friction law (Solver/State law). */
+      const friction::Law &
+      friction_law() const
+      {
+        return law;
+      }
+
       /** The rate-and-state parameters of the base. */
       const friction::Parameters &
       friction_parameters() const
@@ -163,7 +170,7 @@ namespace rsfcycle
 
       const Parameters    &parameters;
       friction::Parameters friction;
-      friction::StateLaw   state_law;
+      const friction::Law &law;
       time::Coupling       coupling;
       std::string          integrator;
       double               mass;

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
-#include <rsfcycle/friction/rate_state.h>
+#include <rsfcycle/friction/local_solve.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
 #include <vector>

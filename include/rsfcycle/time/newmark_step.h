@@ -177,7 +177,7 @@ namespace rsfcycle
       const friction::ContactQuadrature<dim>           &contact;
       solvers::TNNMG                                   &tnnmg;
       const ThetaScheme                                 scheme;
-      const friction::StateLaw                          state_law;
+      const friction::Law                              &law;
       std::function<double(const dealii::Point<dim> &)> along_base;
 
       StepStatistics       work;

@@ -205,7 +205,9 @@ namespace
       mpi.emplace(argc, argv, 1);
     else
       dealii::MultithreadInfo::set_thread_limit(1);
-    if (n_processes > 1 && parameters.solver.linear_correction == "direct")
+    if (n_processes > 1 &&
+        parameters.solver.linear_correction ==
+          rsfcycle::SolverParameters::LinearCorrection::direct)
       throw std::invalid_argument(
         "Solver/Linear correction = direct runs on one MPI rank, not on " +
         std::to_string(n_processes) +
@@ -259,7 +261,7 @@ main(int argc, char **argv)
   try
     {
       dealii::ParameterHandler prm;
-      rsfcycle::Parameters::declare_parameters(prm);
+      rsfcycle::scenes::declare_parameters(prm);
 
       std::string file, resume_dir;
       bool        force = false;

@@ -1,8 +1,6 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/friction/laws.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
-#include <rsfcycle/solvers/tnnmg.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -13,8 +11,70 @@ namespace rsfcycle
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
 
+  template <>
+  const std::vector<std::string> Choice<MeshParameters::RefinementLaw>::names =
+    {"centre distance", "band"};
+  template <>
+  const std::vector<std::string>
+    Choice<TimeSteppingParameters::Controller>::names = {"step-doubling",
+                                                         "local-extrapolation"};
+  template <>
+  const std::vector<std::string>
+    Choice<TimeSteppingParameters::ErrorNorm>::names = {"L2", "max"};
+  template <>
+  const std::vector<std::string> Choice<SolverParameters::Coupling>::names =
+    {"fixed-point", "explicit"};
+  template <>
+  const std::vector<std::string> Choice<SolverParameters::Dynamics>::names =
+    {"dynamic", "quasi-static", "quasi-dynamic"};
+  template <>
+  const std::vector<std::string>
+    Choice<SolverParameters::LinearCorrection>::names = {"multigrid",
+                                                         "direct",
+                                                         "amg"};
+
+
+  template <typename Enum>
+  std::string
+  Choice<Enum>::pattern()
+  {
+    std::string result;
+    for (const auto &name : names)
+      result += (result.empty() ? "" : "|") + name;
+    return result;
+  }
+
+
+  template <typename Enum>
+  Enum
+  Choice<Enum>::parse(const std::string &name)
+  {
+    for (unsigned int i = 0; i < names.size(); ++i)
+      if (names[i] == name)
+        return static_cast<Enum>(i);
+    throw std::invalid_argument(name + ": allowed are " + pattern());
+  }
+
+
+  template <typename Enum>
+  const std::string &
+  Choice<Enum>::name(const Enum value)
+  {
+    return names.at(static_cast<unsigned int>(value));
+  }
+
+
+  template struct Choice<MeshParameters::RefinementLaw>;
+  template struct Choice<TimeSteppingParameters::Controller>;
+  template struct Choice<TimeSteppingParameters::ErrorNorm>;
+  template struct Choice<SolverParameters::Coupling>;
+  template struct Choice<SolverParameters::Dynamics>;
+  template struct Choice<SolverParameters::LinearCorrection>;
+
+
   void
-  RunParameters::declare_parameters(ParameterHandler &prm)
+  RunParameters::declare_parameters(ParameterHandler  &prm,
+                                    const std::string &scene_names)
   {
     prm.declare_entry("Dimension",
                       "2",
@@ -35,7 +95,7 @@ namespace rsfcycle
                       "(out of the plane)");
     prm.declare_entry("Scene",
                       "wedge",
-                      Selection(scenes::scene_names()),
+                      Selection(scene_names),
                       "The physical set-up; its parameters are in the "
                       "subsection of the same name");
     prm.declare_entry("End time", "1000", Double(0), "Simulated time span [s]");
@@ -85,7 +145,7 @@ namespace rsfcycle
     prm.declare_entry(
       "Refinement law",
       "centre distance",
-      Selection("centre distance|band"),
+      Selection(Choice<RefinementLaw>::pattern()),
       "How the local refinements choose the cells to refine toward the "
       "seismogenic patch. centre distance: a cell is refined when its centre "
       "is closer to the patch than `Refinement distance` times its diameter "
@@ -124,11 +184,9 @@ namespace rsfcycle
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    global_refinements     = prm.get_integer("Global refinements");
-    local_refinements      = prm.get_integer("Local refinements");
-    refinement_law         = prm.get("Refinement law") == "band" ?
-                               RefinementLaw::band :
-                               RefinementLaw::centre_distance;
+    global_refinements = prm.get_integer("Global refinements");
+    local_refinements  = prm.get_integer("Local refinements");
+    refinement_law = Choice<RefinementLaw>::parse(prm.get("Refinement law"));
     refinement_distance    = prm.get_double("Refinement distance");
     refinement_band        = prm.get_double("Refinement band");
     refinement_band_layers = prm.get_double("Refinement band layers");
@@ -137,9 +195,20 @@ namespace rsfcycle
 
 
   void
-  TimeSteppingParameters::declare_parameters(ParameterHandler &prm)
+  TimeSteppingParameters::declare_parameters(ParameterHandler  &prm,
+                                             const std::string &integrators)
   {
     prm.enter_subsection("Time stepping");
+    prm.declare_entry(
+      "Integrator",
+      "implicit",
+      Selection(integrators),
+      "How the model is advanced in time. implicit: the model's implicit "
+      "step (Solver/Time scheme, with the rate/state coupling of "
+      "Solver/Coupling), its step sizes chosen by Controller; arkode: "
+      "SUNDIALS ARKODE (implicit, adaptive, relative tolerance = "
+      "Tolerance) on the model's ODE, for models that are one (the "
+      "spring-slider, with Cohesion = 0); it writes no checkpoints");
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),
@@ -147,7 +216,7 @@ namespace rsfcycle
                       "fixed step, the Initial step (false)");
     prm.declare_entry("Controller",
                       "local-extrapolation",
-                      Selection("step-doubling|local-extrapolation"),
+                      Selection(Choice<Controller>::pattern()),
                       "How adaptive steps are chosen. step-doubling: the "
                       "paper's controller (MODEL.md 4.3: two steps of tau "
                       "against one of 2 tau, one of tau against two of "
@@ -185,7 +254,7 @@ namespace rsfcycle
                       "factor x Tolerance [-]");
     prm.declare_entry("Error norm",
                       "L2",
-                      Selection("L2|max"),
+                      Selection(Choice<ErrorNorm>::pattern()),
                       "The norm of the difference of two states (log state "
                       "per contact node) in the step-doubling error estimate "
                       "of the time step: L2 is the distance (14), the "
@@ -220,12 +289,13 @@ namespace rsfcycle
   TimeSteppingParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
+    integrator         = prm.get("Integrator");
     adaptive           = prm.get_bool("Adaptive");
-    controller         = prm.get("Controller");
+    controller         = Choice<Controller>::parse(prm.get("Controller"));
     extrapolated_start = prm.get_bool("Extrapolated start");
-    step_sizes         = prm.get("Step sizes");
+    ladder             = prm.get("Step sizes") == "ladder";
     doubling_threshold = prm.get_double("Doubling threshold");
-    error_norm         = prm.get("Error norm");
+    error_norm         = Choice<ErrorNorm>::parse(prm.get("Error norm"));
     tolerance          = prm.get_double("Tolerance");
     initial_step       = prm.get_double("Initial step");
     minimum_step       = prm.get_double("Minimum step");
@@ -235,9 +305,16 @@ namespace rsfcycle
 
 
   void
-  SolverParameters::declare_parameters(ParameterHandler &prm)
+  SolverParameters::declare_parameters(ParameterHandler  &prm,
+                                       const std::string &schemes)
   {
     prm.enter_subsection("Solver");
+    prm.declare_entry("Time scheme",
+                      "theta",
+                      Selection(schemes),
+                      "The time discretisation of the implicit step. theta: "
+                      "the one-step theta scheme of Theta (0.5: the "
+                      "paper's trapezoidal Newmark scheme (15))");
     prm.declare_entry("State law",
                       "ageing",
                       Selection(friction::law_names()),
@@ -246,12 +323,12 @@ namespace rsfcycle
                       "slip law");
     prm.declare_entry("Coupling",
                       "fixed-point",
-                      Selection("fixed-point|explicit"),
+                      Selection(Choice<Coupling>::pattern()),
                       "Rate/state coupling: the fixed-point iteration (18) "
                       "or explicit decoupling (state from the old velocity)");
     prm.declare_entry("Dynamics",
                       "dynamic",
-                      Selection("dynamic|quasi-static|quasi-dynamic"),
+                      Selection(Choice<Dynamics>::pattern()),
                       "dynamic: Newmark with inertia (15); quasi-static: "
                       "without the mass term; quasi-dynamic: without the mass "
                       "term and with the radiation damping eta V added to the "
@@ -280,7 +357,7 @@ namespace rsfcycle
                       "halved");
     prm.declare_entry("Linear correction",
                       "multigrid",
-                      Selection(solvers::linear_correction_names()),
+                      Selection(Choice<LinearCorrection>::pattern()),
                       "Linear correction of TNNMG: geometric multigrid on the "
                       "mesh levels (preconditioning CG on the truncated "
                       "system), direct (sparse Cholesky with a Schur "
@@ -336,13 +413,15 @@ namespace rsfcycle
   {
     prm.enter_subsection("Solver");
     law                   = friction::make_law(prm.get("State law"));
-    coupling              = prm.get("Coupling");
-    dynamics              = prm.get("Dynamics");
+    time_scheme           = prm.get("Time scheme");
+    coupling              = Choice<Coupling>::parse(prm.get("Coupling"));
+    dynamics              = Choice<Dynamics>::parse(prm.get("Dynamics"));
     theta                 = prm.get_double("Theta");
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");
-    linear_correction      = prm.get("Linear correction");
+    linear_correction =
+      Choice<LinearCorrection>::parse(prm.get("Linear correction"));
     smoothing_steps        = prm.get_integer("Multigrid smoothing steps");
     correction_cycles      = prm.get_integer("Linear correction cycles");
     correction_tolerance   = prm.get_double("Linear correction tolerance");
@@ -408,7 +487,7 @@ namespace rsfcycle
       "Write checkpoint.bin every this many minutes of wall-clock time as "
       "well (0: never) [min]; it is also written at the end, on "
       "SIGINT/SIGTERM and when the step size underflows");
-    output::SeasParameters::declare_parameters(prm);
+    SeasParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -433,14 +512,16 @@ namespace rsfcycle
 
 
   void
-  Parameters::declare_parameters(ParameterHandler &prm)
+  Parameters::declare_parameters(ParameterHandler  &prm,
+                                 const std::string &scene_names,
+                                 const std::string &integrator_names,
+                                 const std::string &scheme_names)
   {
-    RunParameters::declare_parameters(prm);
+    RunParameters::declare_parameters(prm, scene_names);
     MeshParameters::declare_parameters(prm);
-    TimeSteppingParameters::declare_parameters(prm);
-    SolverParameters::declare_parameters(prm);
+    TimeSteppingParameters::declare_parameters(prm, integrator_names);
+    SolverParameters::declare_parameters(prm, scheme_names);
     OutputParameters::declare_parameters(prm);
-    scenes::declare_scene_parameters(prm);
   }
 
   void

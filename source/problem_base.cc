@@ -6,18 +6,20 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/output/files.h>
+#include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/problem_base.h>
+#include <rsfcycle/simulator/simulator.templates.h>
 #include <rsfcycle/solvers/amg_correction.h>
+#include <rsfcycle/solvers/direct_correction.h>
 #include <rsfcycle/solvers/multigrid_correction.h>
-#include <rsfcycle/time/make_controller.h>
-#include <rsfcycle/time/run_loop.templates.h>
+#include <rsfcycle/time/schemes.h>
 
 namespace rsfcycle
 {
   template <int dim>
-  ProblemBase<dim>::ProblemBase(const Parameters         &parameters,
-                                const scenes::Scene<dim> &scene,
-                                std::ostream             &log)
+  ProblemBase<dim>::ProblemBase(const Parameters          &parameters,
+                                const physics::Scene<dim> &scene,
+                                std::ostream              &log)
     : parameters(parameters)
     , scene(scene)
     , log(log)
@@ -25,7 +27,9 @@ namespace rsfcycle
     , discretisation(parameters.mesh,
                      scene,
                      {parameters.run.antiplane,
-                      parameters.solver.dynamics == "quasi-dynamic"})
+                      parameters.solver.dynamics ==
+                        SolverParameters::Dynamics::quasi_dynamic})
+    , scheme(time::make_scheme(parameters.solver))
   {}
 
 
@@ -60,8 +64,9 @@ namespace rsfcycle
     template <int dim>
     std::unique_ptr<solvers::LinearCorrection>
     make_multigrid(const physics::Discretisation<dim>     &discretisation,
-                   const friction::ContactQuadrature<dim> &contact,
+                   const physics::ContactQuadrature<dim>  &contact,
                    const SolverParameters                 &solver,
+                   const time::TimeScheme                 &scheme,
                    const solvers::LinearCorrectionControl &control)
     {
       using MG                        = solvers::MultigridCorrection<dim>;
@@ -127,9 +132,12 @@ namespace rsfcycle
                 std::array<FullMatrix<double>, 3>    &matrices) {
           discretisation.cell_matrices(cell, *fe_values, matrices, *force);
         };
-      const auto coefficients = [scheme = solver.scheme()](const double tau) {
-        return scheme.step_coefficients(tau);
-      };
+      const auto coefficients =
+        [&scheme,
+         inertia = solver.dynamics ==
+                   SolverParameters::Dynamics::dynamic](const double tau) {
+          return time::step_coefficients(scheme, tau, inertia);
+        };
       typename MG::Settings settings;
       settings.smoothing_steps = solver.smoothing_steps;
       settings.control         = control;
@@ -154,18 +162,21 @@ namespace rsfcycle
     solvers::LinearCorrectionControl control;
     control.max_cycles = solver.correction_cycles;
     control.tolerance  = solver.correction_tolerance;
-    if (solver.linear_correction == "direct")
-      linear_correction = std::make_unique<solvers::DirectCorrection>();
-    else if (solver.linear_correction == "amg")
-      linear_correction = std::make_unique<solvers::AMGCorrection>(
-        control, discretisation.dof_components());
-    else if (solver.linear_correction == "multigrid")
-      linear_correction =
-        make_multigrid(discretisation, contact, solver, control);
-    else
-      throw std::invalid_argument(
-        "Solver/Linear correction = " + solver.linear_correction +
-        ": allowed are " + solvers::linear_correction_names());
+    using Correction   = SolverParameters::LinearCorrection;
+    switch (solver.linear_correction)
+      {
+        case Correction::direct:
+          linear_correction = std::make_unique<solvers::DirectCorrection>();
+          break;
+        case Correction::amg:
+          linear_correction = std::make_unique<solvers::AMGCorrection>(
+            control, discretisation.dof_components());
+          break;
+        case Correction::multigrid:
+          linear_correction =
+            make_multigrid(discretisation, contact, solver, *scheme, control);
+          break;
+      }
 
     solvers::TNNMGControl tnnmg_control;
     tnnmg_control.max_iterations   = solver.max_tnnmg_iterations;
@@ -278,31 +289,26 @@ namespace rsfcycle
       setup_system();
     }
     {
-      TimerOutput::Scope scope(timer, "Normal stress");
+      TimerOutput::Scope scope(timer, "Gravity equilibrium");
       compute_initial_state();
     }
     {
       TimerOutput::Scope scope(timer, "Linear correction setup");
       setup_linear_correction();
     }
-    if (parameters.solver.linear_correction != "amg")
+    if (parameters.solver.linear_correction !=
+        SolverParameters::LinearCorrection::amg)
       discretisation.release_assembled_matrices();
     setup_observation_points();
     la::load_partitioner() = discretisation.partitioner;
-    newmark                = std::make_unique<time::NewmarkStep<dim>>(
+    implicit_step          = std::make_unique<time::ImplicitStep<dim>>(
       parameters.solver,
+      *scheme,
       discretisation,
       contact,
       *tnnmg,
       [this](const Point<dim> &p) { return scene.along_base_coordinate(p); });
-    newmark->set_timer(&timer);
-    snapshots = std::make_unique<output::SnapshotWriter<dim>>(
-      parameters.run.output_directory,
-      discretisation,
-      contact,
-      *parameters.solver.law,
-      scene.convergence_rate(),
-      scene.output_frame());
+    implicit_step->set_timer(&timer);
   }
 
 
@@ -343,12 +349,29 @@ namespace rsfcycle
 
   template <int dim>
   std::optional<BodyState>
-  ProblemBase<dim>::newmark_step(const BodyState &old,
-                                 const double     t,
-                                 const double     tau,
-                                 const BodyState *guess)
+  ProblemBase<dim>::step(const BodyState &old,
+                         const double     t,
+                         const double     tau,
+                         const BodyState *guess)
   {
-    return (*newmark)(old, t, tau, guess);
+    return (*implicit_step)(old, t, tau, guess);
+  }
+
+
+  template <int dim>
+  BodyState
+  ProblemBase<dim>::predict(const std::array<const BodyState *, 3> &s,
+                            const std::array<double, 3>            &w) const
+  {
+    BodyState p;
+    p.v.reinit(s[2]->v);
+    for (unsigned int i = 0; i < 3; ++i)
+      p.v.add(w[i], s[i]->v);
+    p.alpha.assign(s[2]->alpha.size(), 0.);
+    for (unsigned int k = 0; k < p.alpha.size(); ++k)
+      p.alpha[k] =
+        w[0] * s[0]->alpha[k] + w[1] * s[1]->alpha[k] + w[2] * s[2]->alpha[k];
+    return p;
   }
 
 
@@ -361,10 +384,10 @@ namespace rsfcycle
 
 
   template <int dim>
-  time::Layout
+  output::Layout
   ProblemBase<dim>::layout() const
   {
-    time::Layout        layout;
+    output::Layout      layout;
     std::vector<double> s, z, w;
     for (const auto &node : contact.nodes())
       {
@@ -391,10 +414,10 @@ namespace rsfcycle
 
 
   template <int dim>
-  time::Sample
+  output::Sample
   ProblemBase<dim>::sample(const BodyState &state) const
   {
-    time::Sample              sample;
+    output::Sample            sample;
     const std::vector<double> rates = contact.slip_rates(state.v);
     sample.slip_rates               = contact.gather(rates);
     sample.slip = contact.gather(contact.tangential_displacement(state.u));
@@ -424,10 +447,10 @@ namespace rsfcycle
 
 
   template <int dim>
-  time::StepStatistics
+  solvers::StepStatistics
   ProblemBase<dim>::take_work()
   {
-    return newmark->take_work();
+    return implicit_step->take_work();
   }
 
 
@@ -435,7 +458,7 @@ namespace rsfcycle
   std::string
   ProblemBase<dim>::last_failure() const
   {
-    return newmark->last_failure();
+    return implicit_step->last_failure();
   }
 
 
@@ -452,35 +475,21 @@ namespace rsfcycle
 
 
   template <int dim>
-  void
-  ProblemBase<dim>::write_snapshot(const BodyState &state, const double t)
+  std::vector<std::unique_ptr<output::Writer>>
+  ProblemBase<dim>::writers()
   {
-    TimerOutput::Scope scope(timer, "Output");
-    snapshots->write(state, t);
-  }
-
-
-  template <int dim>
-  double
-  ProblemBase<dim>::last_snapshot_time() const
-  {
-    return snapshots->last_time();
-  }
-
-
-  template <int dim>
-  void
-  ProblemBase<dim>::save_output(boost::archive::binary_oarchive &archive) const
-  {
-    archive << *snapshots;
-  }
-
-
-  template <int dim>
-  void
-  ProblemBase<dim>::load_output(boost::archive::binary_iarchive &archive)
-  {
-    archive >> *snapshots;
+    std::vector<std::unique_ptr<output::Writer>> list;
+    if (parameters.output.write_vtu)
+      list.push_back(std::make_unique<output::SnapshotWriter<dim>>(
+        parameters.run.output_directory,
+        discretisation,
+        contact,
+        *parameters.solver.law,
+        scene.convergence_rate(),
+        scene.output_frame(),
+        parameters.output,
+        timer));
+    return list;
   }
 
 
@@ -511,10 +520,11 @@ namespace rsfcycle
     log << "Cell diameters: " << h_min << " m to " << h_max << " m\n";
     log << "Gravity equilibrium: CG with algebraic multigrid, "
         << discretisation.gravity_iterations << " iterations\n";
-    log << "Solver: " << parameters.solver.coupling << " coupling, "
-        << parameters.solver.linear_correction << " linear correction, "
-        << parameters.solver.law->name() << " law, "
-        << parameters.solver.dynamics << std::endl;
+    const auto &solver = parameters.solver;
+    log << "Solver: " << name_of(solver.coupling) << " coupling, "
+        << name_of(solver.linear_correction) << " linear correction, "
+        << solver.law->name() << " law, " << name_of(solver.dynamics)
+        << std::endl;
     if (const auto *mg =
           dynamic_cast<const solvers::MultigridCorrection<dim> *>(
             linear_correction.get()))
@@ -557,33 +567,8 @@ namespace rsfcycle
     if (!resume)
       output::write_parameters(parameters.run.output_directory, prm);
     setup();
-
-    controller = time::make_controller<BodyState>(
-      parameters.time_stepping,
-      [this](const BodyState &s,
-             const double     t0,
-             const double     dt,
-             const BodyState *guess) { return newmark_step(s, t0, dt, guess); },
-      [this](const BodyState &s1, const BodyState &s2) {
-        return error_distance(s1.alpha, s2.alpha);
-      },
-      [](const std::array<const BodyState *, 3> &s,
-         const std::array<double, 3>            &w) {
-        // a prediction: the velocity and the state (what a guess gives)
-        BodyState p;
-        p.v.reinit(s[2]->v);
-        for (unsigned int i = 0; i < 3; ++i)
-          p.v.add(w[i], s[i]->v);
-        p.alpha.assign(s[2]->alpha.size(), 0.);
-        for (unsigned int k = 0; k < p.alpha.size(); ++k)
-          p.alpha[k] = w[0] * s[0]->alpha[k] + w[1] * s[1]->alpha[k] +
-                       w[2] * s[2]->alpha[k];
-        return p;
-      },
-      parameters.solver.scheme().local_error_order());
-    time_loop = std::make_unique<time::RunLoop<BodyState>>(
-      parameters, *this, *controller, log, timer);
-    return !time_loop->run(resume).interrupted;
+    Simulator<BodyState> simulator(parameters, *this, log, timer);
+    return !simulator.run(resume).interrupted;
   }
 
   template class ProblemBase<2>;
@@ -592,8 +577,5 @@ namespace rsfcycle
 
 namespace rsfcycle
 {
-  namespace time
-  {
-    template class RunLoop<BodyState>;
-  }
+  template class Simulator<BodyState>;
 } // namespace rsfcycle

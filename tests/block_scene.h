@@ -12,12 +12,12 @@
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>
 #include <rsfcycle/ids.h>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/physics/scene.h>
 
 using namespace dealii;
 using namespace rsfcycle;
 
-class Block : public scenes::Scene<2>
+class Block : public physics::Scene<2>
 {
 public:
   /** Kelvin-Voigt relaxation time eta/G = eta_b/K [s]; 0: inviscid. */
@@ -57,10 +57,10 @@ public:
   /** Density and bulk modulus are scaled by this (the Poisson ratio kept). */
   double material_scale = 1;
 
-  scenes::Material
+  physics::Material
   material(types::material_id) const override
   {
-    scenes::Material m;
+    physics::Material m;
     m.density         = 1000 * material_scale;
     m.bulk_modulus    = 1e6 * material_scale;
     m.poisson_ratio   = 0.25;

@@ -20,9 +20,11 @@ void
 check(const std::string &norm)
 {
   Parameters parameters;
-  parameters.mesh.global_refinements  = 2;
-  parameters.mesh.local_refinements   = 2;
-  parameters.time_stepping.error_norm = norm;
+  parameters.mesh.global_refinements = 2;
+  parameters.mesh.local_refinements  = 2;
+  parameters.time_stepping.error_norm =
+    norm == "max" ? TimeSteppingParameters::ErrorNorm::max :
+                    TimeSteppingParameters::ErrorNorm::l2;
   Block              scene;
   std::ostringstream log;
   ProblemBase<2>     problem(parameters, scene, log);

@@ -28,7 +28,7 @@ check(const double material_scale, const double expected_eta)
   Parameters parameters;
   parameters.mesh.global_refinements = 2;
   parameters.mesh.local_refinements  = 2;
-  parameters.solver.dynamics         = "quasi-dynamic";
+  parameters.solver.dynamics = SolverParameters::Dynamics::quasi_dynamic;
   Block scene;
   scene.material_scale = material_scale;
 

@@ -1,4 +1,4 @@
-// Checks the refinement laws of `Mesh/Refinement law` (issue 15):
+// Checks the refinement laws of `Mesh/Refinement law`:
 //  - Wedge::distance_to_patch of a box against a brute-force minimum over a
 //    fine sampling of box and patch (the patch written out here from the
 //    documented geometry: s_down = Patch down-dip end / cos(dip), s_up =

@@ -21,8 +21,9 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/spring_slider.h>
+#include <rsfcycle/scenes/registry.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -37,7 +38,7 @@ main()
   for (const std::string law : {"ageing", "slip"})
     {
       ParameterHandler prm;
-      Parameters::declare_parameters(prm);
+      scenes::declare_parameters(prm);
       prm.parse_input_from_string("set Scene = spring-slider\n"
                                   "set End time = 21\n"
                                   "set Output directory = output-" +
@@ -68,7 +69,7 @@ main()
                                   "end\n");
       Parameters parameters;
       parameters.parse_parameters(prm);
-      scenes::SpringSlider slider(parameters, prm);
+      models::SpringSlider slider(parameters, prm);
       std::ostringstream   log;
       slider.run(prm, log);
 

@@ -1,5 +1,5 @@
 // Closed-form checks of the rate-and-state law under an imposed slip rate
-// (issue 4), through the friction API that every scene steps with
+//, through the friction API that every scene steps with
 // (update_state (17) in steps of 0.05 L/V, friction_coefficient (2)).
 // Parameters of prm/spring-slider.prm: a = 0.01, b = 0.015, mu* = 0.6,
 // V* = 1e-6 m/s, L = 1e-5 m.

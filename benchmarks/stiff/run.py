@@ -139,6 +139,7 @@ def write_prm(name, end, max_step, p):
 set End time         = {end:.15g}
 set Output directory = {d}
 subsection Time stepping
+  set Integrator = implicit
   set Controller   = step-doubling
   set Adaptive     = true
   set Tolerance    = 1e-5
@@ -159,7 +160,6 @@ subsection Output
   set Checkpoint minutes = 0
 end
 subsection Spring slider
-  set Integrator           = newmark
 {entries}
 end
 """)

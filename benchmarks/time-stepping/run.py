@@ -126,6 +126,7 @@ set End time = 5000
 set Output directory = {d}
 set Overwrite output = true
 subsection Time stepping
+  set Integrator = {"arkode" if arkode else "implicit"}
   set Controller         = {controller}
   set Extrapolated start = {str(extrapolate).lower()}
   set Step sizes         = {steps}
@@ -141,7 +142,6 @@ subsection Output
 end
 subsection Spring slider
   set Initial slip rate = 1.01e-6
-  set Integrator        = {"arkode" if arkode else "newmark"}
 end
 """)
     return d, prm

@@ -38,6 +38,7 @@ set End time = {END_TIME}
 set Output directory = {d}
 set Overwrite output = true
 subsection Time stepping
+  set Integrator = {"arkode" if integrator == "arkode" else "implicit"}
   set Controller   = step-doubling
   set Tolerance    = {tol:g}
   set Minimum step = 1e-14
@@ -49,7 +50,6 @@ subsection Output
   set Progress interval = 1e9
 end
 subsection Spring slider
-  set Integrator               = {"arkode" if integrator == "arkode" else "newmark"}
   set Reference sample spacing = {spacing:g}
 end
 """)

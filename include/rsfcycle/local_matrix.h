@@ -19,7 +19,7 @@ namespace rsfcycle
      * in the local numbering of a partitioner (owned entries first, ghosts
      * after), the diagonal first in every row. The products, the residual
      * and the SOR relaxations that the multigrid cycle, TNNMG and the
-     * Newmark step run on distributed vectors, by raw index instead of the
+     * implicit step run on distributed vectors, by raw index instead of the
      * global-index access of deal.II's templates for distributed vectors.
      *
      * Ghosts. A kernel that reads other ranks' entries of its argument

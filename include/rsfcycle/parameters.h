@@ -4,27 +4,62 @@
 #include <deal.II/base/parameter_handler.h>
 #include <memory>
 #include <rsfcycle/friction/laws.h>
-#include <rsfcycle/output/seas_parameters.h>
-#include <rsfcycle/time/theta_scheme.h>
+#include <rsfcycle/seas_parameters.h>
 #include <string>
+#include <vector>
 
 namespace rsfcycle
 {
   using dealii::ParameterHandler;
 
+  /**
+   * The names of a choice (a Patterns::Selection) in the order of its enum's
+   * values: every choice is parsed into its enum once, in
+   * parse_parameters(), and the rest of the program compares enums; the
+   * names serve the pattern, the parsing and the log.
+   */
+  template <typename Enum>
+  struct Choice
+  {
+    /** The names, in the order of the enum's values (defined per enum). */
+    static const std::vector<std::string> names;
+
+    /** "a|b|c", the pattern of the Selection. */
+    static std::string
+    pattern();
+
+    /** The value of a name the pattern allowed. */
+    static Enum
+    parse(const std::string &name);
+
+    /** The name of a value. */
+    static const std::string &
+    name(Enum value);
+  };
+
+  /** The name of an enum value of a choice, for the log. */
+  template <typename Enum>
+  const std::string &
+  name_of(const Enum value)
+  {
+    return Choice<Enum>::name(value);
+  }
+
   /** Top level: which scene, in which dimension, for how long, where to. */
   struct RunParameters
   {
-    unsigned int dimension         = 2;
-    bool         antiplane         = false; // Displacement = antiplane
+    unsigned int dimension = 2;
+    bool         antiplane = false; // Displacement = antiplane
+    /** The scene's name; scenes/registry.h makes the scene of a name. */
     std::string  scene             = "wedge";
     double       end_time          = 1000;
     unsigned int stop_after_events = 0;
     std::string  output_directory  = "output";
     bool         overwrite_output  = false;
 
+    /** `Scene` is declared with the names of the registry's scenes. */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, const std::string &scene_names);
     void
     parse_parameters(ParameterHandler &prm);
   };
@@ -54,22 +89,41 @@ namespace rsfcycle
     parse_parameters(ParameterHandler &prm);
   };
 
-  /** Subsection "Time stepping": step-size control (MODEL.md §4.3). */
+  /** Subsection "Time stepping": integrator and step-size control. */
   struct TimeSteppingParameters
   {
-    bool        adaptive           = true;
-    std::string controller         = "local-extrapolation";
-    bool        extrapolated_start = true;
-    std::string step_sizes         = "ladder";
-    double      doubling_threshold = 1;
-    std::string error_norm         = "L2";
-    double      tolerance          = 1e-5;
-    double      initial_step       = 1e-2;
-    double      minimum_step       = 1e-9;
-    double      maximum_step       = 100;
+    /** The step-size control of the implicit step (MODEL.md §4.3). */
+    enum class Controller
+    {
+      step_doubling,
+      local_extrapolation
+    };
+    /** The norm of the error estimate. */
+    enum class ErrorNorm
+    {
+      /** the state distance (14) */
+      l2,
+      /** the largest difference at a contact node */
+      max
+    };
 
+    /** The integrator's name; time/integrators.h makes it. */
+    std::string integrator         = "implicit";
+    bool        adaptive           = true;
+    Controller  controller         = Controller::local_extrapolation;
+    bool        extrapolated_start = true;
+    /** Step sizes = ladder (true) or free (false). */
+    bool      ladder             = true;
+    double    doubling_threshold = 1;
+    ErrorNorm error_norm         = ErrorNorm::l2;
+    double    tolerance          = 1e-5;
+    double    initial_step       = 1e-2;
+    double    minimum_step       = 1e-9;
+    double    maximum_step       = 100;
+
+    /** `Integrator` is declared with the names of time/integrators.h. */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, const std::string &integrators);
     void
     parse_parameters(ParameterHandler &prm);
   };
@@ -77,33 +131,50 @@ namespace rsfcycle
   /** Subsection "Solver": rate/state coupling, TNNMG, linear correction. */
   struct SolverParameters
   {
+    /** Rate/state coupling within one time step (MODEL.md §4.1). */
+    enum class Coupling
+    {
+      fixed_point,
+      explicit_decoupling
+    };
+    /** Inertia and radiation damping. */
+    enum class Dynamics
+    {
+      dynamic,
+      quasi_static,
+      quasi_dynamic
+    };
+    /** The linear correction of TNNMG (MODEL.md §4.2 step 3). */
+    enum class LinearCorrection
+    {
+      multigrid,
+      direct,
+      amg
+    };
+
     /** The friction law of `State law` (friction/laws.h). */
     std::shared_ptr<const friction::Law> law = friction::make_law("ageing");
-    std::string                          coupling              = "fixed-point";
-    std::string                          dynamics              = "dynamic";
-    double                               theta                 = 0.5;
-    double                               fixed_point_tolerance = 1e-5;
-    unsigned int                         max_fixed_point_iterations = 20;
-    std::string                          linear_correction      = "multigrid";
-    unsigned int                         smoothing_steps        = 3;
-    unsigned int                         correction_cycles      = 1;
-    double                               correction_tolerance   = 1e-2;
-    double                               tnnmg_tolerance        = 1e-10;
-    double                               inner_tolerance_factor = 0.3;
-    unsigned int                         max_tnnmg_iterations   = 100;
-    double                               truncation_ratio       = 1e10;
+    Coupling                             coupling = Coupling::fixed_point;
+    Dynamics                             dynamics = Dynamics::dynamic;
+    /** The time scheme's name; time/schemes.h makes it. */
+    std::string      time_scheme                = "theta";
+    double           theta                      = 0.5;
+    double           fixed_point_tolerance      = 1e-5;
+    unsigned int     max_fixed_point_iterations = 20;
+    LinearCorrection linear_correction          = LinearCorrection::multigrid;
+    unsigned int     smoothing_steps            = 3;
+    unsigned int     correction_cycles          = 1;
+    double           correction_tolerance       = 1e-2;
+    double           tnnmg_tolerance            = 1e-10;
+    double           inner_tolerance_factor     = 0.3;
+    unsigned int     max_tnnmg_iterations       = 100;
+    double           truncation_ratio           = 1e10;
 
+    /** `Time scheme` is declared with the names of time/schemes.h. */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, const std::string &schemes);
     void
     parse_parameters(ParameterHandler &prm);
-
-    /** The time step's scheme: `Theta` and whether `Dynamics` has inertia. */
-    time::ThetaScheme
-    scheme() const
-    {
-      return {theta, dynamics == "dynamic"};
-    }
   };
 
   /** Subsection "Output": snapshots, profiles, events, progress. */
@@ -121,7 +192,7 @@ namespace rsfcycle
     unsigned int checkpoint_steps       = 5000;
     double       checkpoint_minutes     = 10;
     /** The subsection Output/SEAS. */
-    output::SeasParameters seas;
+    SeasParameters seas;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -129,7 +200,7 @@ namespace rsfcycle
     parse_parameters(ParameterHandler &prm);
   };
 
-  /** All parameters of a run. */
+  /** All parameters of a run but the scene's own subsection. */
   struct Parameters
   {
     RunParameters          run;
@@ -138,9 +209,16 @@ namespace rsfcycle
     SolverParameters       solver;
     OutputParameters       output;
 
-    /** Declare every entry, scenes' subsections included. */
+    /**
+     * Declare every entry but the scenes' subsections (declared by
+     * scenes::declare_parameters(), which calls this function with the
+     * names of its scenes).
+     */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler  &prm,
+                       const std::string &scene_names,
+                       const std::string &integrator_names,
+                       const std::string &scheme_names);
     void
     parse_parameters(ParameterHandler &prm);
 

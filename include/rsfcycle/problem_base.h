@@ -6,17 +6,17 @@
 #include <memory>
 #include <optional>
 #include <ostream>
-#include <rsfcycle/friction/contact_quadrature.h>
 #include <rsfcycle/la.h>
-#include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/parameters.h>
+#include <rsfcycle/physics/body_state.h>
+#include <rsfcycle/physics/contact_quadrature.h>
 #include <rsfcycle/physics/discretisation.h>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
-#include <rsfcycle/time/controller.h>
+#include <rsfcycle/time/implicit_model.h>
+#include <rsfcycle/time/implicit_step.h>
 #include <rsfcycle/time/model.h>
-#include <rsfcycle/time/newmark_step.h>
-#include <rsfcycle/time/run_loop.h>
+#include <rsfcycle/time/time_scheme.h>
 #include <vector>
 
 namespace rsfcycle
@@ -30,25 +30,30 @@ namespace rsfcycle
    *    refined toward the seismogenic patch, FE_Q(1)^dim, the matrices
    *    M, C, K and the gravity load, the Dirichlet dofs;
    *  - the boundary quadrature of the sinh^-1 dissipation
-   *    (friction/contact_quadrature.h): contact nodes, lumped weights,
+   *    (physics/contact_quadrature.h): contact nodes, lumped weights,
    *    normal stress, the state distance (14);
    *  - TNNMG with its linear correction (solvers/), for `multigrid` the
    *    geometric MGTransfer hierarchy of the locally refined mesh;
-   *  - the Newmark step with the rate/state coupling (time/newmark_step.h);
-   *  - the writers of VTU snapshots (output/snapshots.h);
-   *  - the ParameterHandler-driven time loop (time/run_loop.h) with its
-   *    step-size controller (time/make_controller.h), through run().
-   * To the time loop it is a time::Model of BodyState.
+   *  - the implicit step of `Solver/Time scheme` with the rate/state
+   *    coupling (time/implicit_step.h);
+   *  - the ParameterHandler-driven time loop, through run(): it hands itself
+   *    to the Simulator (simulator/simulator.h), which builds the
+   *    integrator and the writers (besides the generic ones, the VTU
+   *    snapshots of output/snapshots.h that writers() gives) from the
+   *    parameters.
+   * To the simulator it is a time::Model of BodyState whose steps are
+   * implicit (time::ImplicitModel).
    */
   template <int dim>
-  class ProblemBase : public time::Model<BodyState>
+  class ProblemBase : public time::Model<BodyState>,
+                      public time::ImplicitModel<BodyState>
   {
   public:
-    using NodeInfo = typename friction::ContactQuadrature<dim>::NodeInfo;
+    using NodeInfo = typename physics::ContactQuadrature<dim>::NodeInfo;
 
-    ProblemBase(const Parameters         &parameters,
-                const scenes::Scene<dim> &scene,
-                std::ostream             &log);
+    ProblemBase(const Parameters          &parameters,
+                const physics::Scene<dim> &scene,
+                std::ostream              &log);
 
     /** Mesh, dofs, matrices, normal stress, initial state, solvers. */
     void
@@ -62,17 +67,6 @@ namespace rsfcycle
      */
     bool
     run(const ParameterHandler &prm, bool resume = false);
-
-    /**
-     * One Newmark step of length tau from state `old` at time t, its
-     * iterations started from `guess` if given; no value if the spatial
-     * problem failed (no convergence, non-finite values).
-     */
-    std::optional<BodyState>
-    newmark_step(const BodyState &old,
-                 double           t,
-                 double           tau,
-                 const BodyState *guess = nullptr);
 
     /** The state distance (14) between two states. */
     double
@@ -91,7 +85,8 @@ namespace rsfcycle
     error_distance(const std::vector<double> &alpha1,
                    const std::vector<double> &alpha2) const
     {
-      return parameters.time_stepping.error_norm == "max" ?
+      return parameters.time_stepping.error_norm ==
+                 TimeSteppingParameters::ErrorNorm::max ?
                contact.state_max_distance(alpha1, alpha2) :
                contact.state_distance(alpha1, alpha2);
     }
@@ -136,32 +131,50 @@ namespace rsfcycle
     {
       return initial;
     }
-    time::Layout
+    output::Layout
     layout() const override;
-    time::Sample
+    output::Sample
     sample(const BodyState &state) const override;
-    time::StepStatistics
-    take_work() override;
-    std::string
-    last_failure() const override;
     output::CheckpointIdentity
     checkpoint_identity() const override;
     /** The scene, mesh and solver lines of the log (read by test digests). */
     void
     describe(std::ostream &log) const override;
-    bool
-    writes_snapshots() const override
-    {
-      return true;
-    }
-    void
-    write_snapshot(const BodyState &state, double t) override;
+    /** The VTU snapshots (with `Output/Write VTU`). */
+    std::vector<std::unique_ptr<output::Writer>>
+    writers() override;
+    solvers::StepStatistics
+    take_work() override;
+    std::string
+    last_failure() const override;
+    /** @} */
+
+    /** @name The time::ImplicitModel interface */
+    /** @{ */
+    /**
+     * One implicit step of length tau from state `old` at time t, its
+     * iterations started from `guess` if given; no value if the spatial
+     * problem failed (no convergence, non-finite values).
+     */
+    std::optional<BodyState>
+    step(const BodyState &old,
+         double           t,
+         double           tau,
+         const BodyState *guess = nullptr) override;
     double
-    last_snapshot_time() const override;
-    void
-    save_output(boost::archive::binary_oarchive &archive) const override;
-    void
-    load_output(boost::archive::binary_iarchive &archive) override;
+    error_distance(const BodyState &s1, const BodyState &s2) const override
+    {
+      return error_distance(s1.alpha, s2.alpha);
+    }
+    /** The velocity and the friction state (what a guess needs). */
+    BodyState
+    predict(const std::array<const BodyState *, 3> &states,
+            const std::array<double, 3>            &weights) const override;
+    double
+    error_order() const override
+    {
+      return scheme->local_error_order();
+    }
     /** @} */
 
   private:
@@ -174,19 +187,18 @@ namespace rsfcycle
     void
     compute_initial_state();
 
-    const Parameters         &parameters;
-    const scenes::Scene<dim> &scene;
-    std::ostream             &log;
-    TimerOutput               timer;
+    const Parameters          &parameters;
+    const physics::Scene<dim> &scene;
+    std::ostream              &log;
+    TimerOutput                timer;
 
-    physics::Discretisation<dim>                 discretisation;
-    friction::ContactQuadrature<dim>             contact;
-    std::unique_ptr<solvers::LinearCorrection>   linear_correction;
-    std::unique_ptr<solvers::TNNMG>              tnnmg;
-    std::unique_ptr<time::NewmarkStep<dim>>      newmark;
-    std::unique_ptr<output::SnapshotWriter<dim>> snapshots;
-    std::unique_ptr<time::Controller<BodyState>> controller;
-    std::unique_ptr<time::RunLoop<BodyState>>    time_loop;
+    physics::Discretisation<dim>               discretisation;
+    physics::ContactQuadrature<dim>            contact;
+    std::unique_ptr<solvers::LinearCorrection> linear_correction;
+    std::unique_ptr<solvers::TNNMG>            tnnmg;
+    /** The time scheme of the implicit step (`Solver/Time scheme`). */
+    const std::unique_ptr<const time::TimeScheme> scheme;
+    std::unique_ptr<time::ImplicitStep<dim>>      implicit_step;
 
     BodyState initial;
     /** Contact nodes with a tensile reaction in the gravity equilibrium. */

@@ -1,3 +1,7 @@
+#include <algorithm>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/data_out.h>
@@ -135,17 +139,70 @@ namespace rsfcycle
     SnapshotWriter<dim>::SnapshotWriter(
       const std::string                           &dir,
       const physics::Discretisation<dim>          &discretisation,
-      const friction::ContactQuadrature<dim>      &contact,
+      const physics::ContactQuadrature<dim>       &contact,
       const friction::Law                         &law,
       const double                                 convergence_rate,
-      const std::pair<Tensor<2, dim>, Point<dim>> &frame)
+      const std::pair<Tensor<2, dim>, Point<dim>> &frame,
+      const OutputParameters                      &output,
+      TimerOutput                                 &timer)
       : dir(dir)
       , discretisation(discretisation)
       , contact(contact)
       , law(law)
       , v0(convergence_rate)
       , frame(frame)
+      , interval(output.output_interval)
+      , event_interval(output.event_output_interval)
+      , timer(timer)
     {}
+
+
+    template <int dim>
+    void
+    SnapshotWriter<dim>::start(const Record &record)
+    {
+      write_snapshot(record.state_as<BodyState>(), record.t);
+    }
+
+
+    template <int dim>
+    void
+    SnapshotWriter<dim>::write(const Record &record)
+    {
+      const double eps = 1e-12 * std::max(1., record.t);
+      if (record.t >=
+          last_output +
+            (record.events->in_event() ? event_interval : interval) - eps)
+        {
+          write_snapshot(record.state_as<BodyState>(), record.t);
+          last_output = record.t;
+        }
+    }
+
+
+    template <int dim>
+    void
+    SnapshotWriter<dim>::finish(const Record &record)
+    {
+      if (last_time() < record.t)
+        write_snapshot(record.state_as<BodyState>(), record.t);
+    }
+
+
+    template <int dim>
+    void
+    SnapshotWriter<dim>::save(boost::archive::binary_oarchive &archive) const
+    {
+      archive << n_snapshots << records << fault_records << last_output;
+    }
+
+
+    template <int dim>
+    void
+    SnapshotWriter<dim>::load(boost::archive::binary_iarchive &archive)
+    {
+      archive >> n_snapshots >> records >> fault_records >> last_output;
+    }
 
 
     template <int dim>
@@ -211,8 +268,9 @@ namespace rsfcycle
 
     template <int dim>
     void
-    SnapshotWriter<dim>::write(const BodyState &state, const double t)
+    SnapshotWriter<dim>::write_snapshot(const BodyState &state, const double t)
     {
+      TimerOutput::Scope            scope(timer, "Output");
       const std::vector<la::Vector> field = base_fields(state);
       state.u.update_ghost_values();
       state.v.update_ghost_values();
@@ -315,9 +373,9 @@ namespace rsfcycle
      * the name to record in the PVD file.
      */
     template <int dim>
-    template <class Writer>
+    template <class DataWriter>
     std::string
-    SnapshotWriter<dim>::write_pieces(const Writer      &writer,
+    SnapshotWriter<dim>::write_pieces(const DataWriter  &writer,
                                       const std::string &stem) const
     {
       const MPI_Comm     comm = discretisation.triangulation.get_communicator();

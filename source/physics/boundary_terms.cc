@@ -15,9 +15,9 @@ namespace rsfcycle
     template <class Iterator>
     void
     Discretisation<dim>::add_absorbing_terms(
-      const Iterator         &cell,
-      const scenes::Material &material,
-      FullMatrix<double>     &cell_viscosity) const
+      const Iterator          &cell,
+      const physics::Material &material,
+      FullMatrix<double>      &cell_viscosity) const
     {
       const double c_s = std::sqrt(material.shear_modulus() / material.density);
       const double c_p =
@@ -88,8 +88,8 @@ namespace rsfcycle
     template <int dim>
     template <class Iterator>
     void
-    Discretisation<dim>::add_contact_terms(const Iterator         &cell,
-                                           const scenes::Material *material,
+    Discretisation<dim>::add_contact_terms(const Iterator          &cell,
+                                           const physics::Material *material,
                                            FullMatrix<double> *cell_viscosity,
                                            Vector<double>     *cell_force) const
     {
@@ -131,12 +131,12 @@ namespace rsfcycle
 #define RSFCYCLE_BOUNDARY_TERMS(dim, Iterator)            \
   template void Discretisation<dim>::add_contact_terms(   \
     const DoFHandler<dim>::Iterator &,                    \
-    const scenes::Material *,                             \
+    const physics::Material *,                            \
     FullMatrix<double> *,                                 \
     Vector<double> *) const;                              \
   template void Discretisation<dim>::add_absorbing_terms( \
     const DoFHandler<dim>::Iterator &,                    \
-    const scenes::Material &,                             \
+    const physics::Material &,                            \
     FullMatrix<double> &) const;
     RSFCYCLE_BOUNDARY_TERMS(2, active_cell_iterator)
     RSFCYCLE_BOUNDARY_TERMS(2, level_cell_iterator)

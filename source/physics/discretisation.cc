@@ -19,9 +19,9 @@ namespace rsfcycle
   namespace physics
   {
     template <int dim>
-    Discretisation<dim>::Discretisation(const MeshParameters     &mesh,
-                                        const scenes::Scene<dim> &scene,
-                                        const Options            &options)
+    Discretisation<dim>::Discretisation(const MeshParameters      &mesh,
+                                        const physics::Scene<dim> &scene,
+                                        const Options             &options)
       : triangulation(MPI_COMM_WORLD,
                       Triangulation<dim>::limit_level_difference_at_vertices,
                       parallel::distributed::Triangulation<
@@ -205,12 +205,12 @@ namespace rsfcycle
       std::array<FullMatrix<double>, 3> &matrices,
       Vector<double>                    &cell_force) const
     {
-      const scenes::Material material     = scene.material(cell->material_id());
-      const double           bulk_modulus = material.bulk_modulus;
-      const double           shear_modulus = material.shear_modulus();
-      const double           lambda  = bulk_modulus - 2. / 3. * shear_modulus;
-      const Tensor<1, dim>   gravity = scene.gravity();
-      const double           eta_lambda =
+      const physics::Material material = scene.material(cell->material_id());
+      const double            bulk_modulus  = material.bulk_modulus;
+      const double            shear_modulus = material.shear_modulus();
+      const double            lambda  = bulk_modulus - 2. / 3. * shear_modulus;
+      const Tensor<1, dim>    gravity = scene.gravity();
+      const double            eta_lambda =
         material.bulk_viscosity - 2. / 3. * material.shear_viscosity;
       const FEValuesExtractors::Vector displacement(0);
 
@@ -267,7 +267,7 @@ namespace rsfcycle
     void
     Discretisation<dim>::antiplane_cell_matrices(
       const FEValues<dim>               &fe_values,
-      const scenes::Material            &material,
+      const physics::Material           &material,
       std::array<FullMatrix<double>, 3> &matrices) const
     {
       auto &[cell_mass, cell_viscosity, cell_stiffness] = matrices;

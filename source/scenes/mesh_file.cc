@@ -7,9 +7,9 @@
 #include <limits>
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
-#include <rsfcycle/output/seas_parameters.h>
 #include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/mesh_file_input.h>
+#include <rsfcycle/seas_parameters.h>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -134,7 +134,7 @@ namespace rsfcycle
     void
     MeshFile<dim>::check_seas_positions(ParameterHandler &prm) const
     {
-      output::SeasParameters seas;
+      SeasParameters seas;
       prm.enter_subsection("Output");
       seas.parse_parameters(prm);
       prm.leave_subsection();

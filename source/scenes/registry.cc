@@ -1,8 +1,10 @@
+#include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/registry.h>
-#include <rsfcycle/scenes/spring_slider.h>
 #include <rsfcycle/scenes/wedge.h>
+#include <rsfcycle/time/integrators.h>
+#include <rsfcycle/time/schemes.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -17,11 +19,15 @@ namespace rsfcycle
 
 
     void
-    declare_scene_parameters(ParameterHandler &prm)
+    declare_parameters(ParameterHandler &prm)
     {
+      Parameters::declare_parameters(prm,
+                                     scene_names(),
+                                     time::integrator_names(),
+                                     time::scheme_names());
       Wedge<2>::declare_parameters(prm);
       MeshFile<2>::declare_parameters(prm);
-      SpringSlider::declare_parameters(prm);
+      models::SpringSlider::declare_parameters(prm);
     }
 
 
@@ -65,7 +71,7 @@ namespace rsfcycle
       };
 
 
-      /** The spring-slider: no mesh, the same run loop. */
+      /** The spring-slider: no mesh, the same simulator. */
       class SpringSliderSimulation : public Simulation
       {
       public:
@@ -89,7 +95,7 @@ namespace rsfcycle
         }
 
       private:
-        SpringSlider slider;
+        models::SpringSlider slider;
       };
     } // namespace
 

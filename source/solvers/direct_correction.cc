@@ -1,13 +1,13 @@
-// The exact linear correction of TNNMG (DirectCorrection, declared in
-// tnnmg.h): CHOLMOD on the free non-contact unknowns and a dense Schur
-// complement on the contact dofs.
+// The exact linear correction of TNNMG (solvers/direct_correction.h):
+// CHOLMOD on the free non-contact unknowns and a dense Schur complement on
+// the contact dofs.
 #include <cmath>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <rsfcycle/solvers/direct_correction.h>
 #include <rsfcycle/solvers/sparse_cholesky.h>
-#include <rsfcycle/solvers/tnnmg.h>
 
 namespace rsfcycle
 {
@@ -20,9 +20,9 @@ namespace rsfcycle
       double                       key = 0;
       dealii::SparsityPattern      pattern;
       dealii::SparseMatrix<double> A_II;
-      SparseCholesky               lu;
-      dealii::FullMatrix<double>   schur; // n_c x n_c
-      dealii::FullMatrix<double>   Z;     // A_II^{-1} A_Ic
+      SparseCholesky               cholesky; // of A_II
+      dealii::FullMatrix<double>   schur;    // n_c x n_c
+      dealii::FullMatrix<double>   Z;        // A_II^{-1} A_Ic
     };
 
 
@@ -83,7 +83,7 @@ namespace rsfcycle
              ++j)
           if (interior_index[A.column(j)] >= 0)
             f->A_II.set(k, interior_index[A.column(j)], A.value(j));
-      f->lu.factorize(f->A_II);
+      f->cholesky.factorize(f->A_II);
 
       const unsigned int n_c = contact_dofs.size();
       f->schur.reinit(n_c, n_c);
@@ -99,7 +99,7 @@ namespace rsfcycle
             else if (contact_index[A.column(e)] >= 0)
               f->schur(contact_index[A.column(e)], j) += A.value(e);
           }
-      f->lu.solve(A_Ic, f->Z);
+      f->cholesky.solve(A_Ic, f->Z);
       // S = A_cc - A_Ic^T Z
       dealii::FullMatrix<double> product(n_c, n_c);
       A_Ic.Tmmult(product, f->Z);
@@ -134,7 +134,7 @@ namespace rsfcycle
       double       *x = c.begin();
       for (unsigned int k = 0; k < n_I; ++k)
         b_I[k] = b[interior[k]];
-      f.lu.solve(b_I, y);
+      f.cholesky.solve(b_I, y);
 
       c = 0;
       if (n_a > 0)

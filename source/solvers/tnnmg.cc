@@ -390,11 +390,5 @@ namespace rsfcycle
       return stats;
     }
 
-
-    std::string
-    linear_correction_names()
-    {
-      return "multigrid|direct|amg";
-    }
   } // namespace solvers
 } // namespace rsfcycle

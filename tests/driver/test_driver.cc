@@ -17,11 +17,11 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/registry.h>
-#include <rsfcycle/scenes/spring_slider.h>
 #include <sstream>
 
 namespace
@@ -84,7 +84,7 @@ namespace
     for (const double x : parameters.output.seas.fault_stations)
       {
         const std::string name =
-          rsfcycle::output::SeasParameters::fault_station_file(x);
+          rsfcycle::SeasParameters::fault_station_file(x);
         const auto rows = read_seas(dir + name);
         const auto last = rows.back();
         out << name << " " << rows.size() << "; " << last[0] << " "
@@ -228,7 +228,7 @@ namespace
                     dealii::ParameterHandler   &prm,
                     std::ostream               &out)
   {
-    rsfcycle::scenes::SpringSlider slider(parameters, prm);
+    rsfcycle::models::SpringSlider slider(parameters, prm);
     std::ostringstream             log;
     const auto                     summary = slider.run(prm, log);
     std::cout << log.str();
@@ -310,7 +310,7 @@ main(int argc, char **argv)
       if (argc != 2)
         throw std::invalid_argument("usage: rsfcycle_test_driver FILE.prm");
       dealii::ParameterHandler prm;
-      rsfcycle::Parameters::declare_parameters(prm);
+      rsfcycle::scenes::declare_parameters(prm);
       prm.parse_input(argv[1]);
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Bad-input test (issue 6): each malformed parameter file must give exactly
+# Bad-input test: each malformed parameter file must give exactly
 # one line on stderr, "rsfcycle: error: ...", naming the offending entry (the
 # expected word is checked), a non-zero exit status, and must not create or
 # change its run folder. Covers unknown entries, misspelled subsections,
@@ -67,7 +67,7 @@ check theta "Theta" 'subsection Solver\nset Theta = 0.4\nend'
 check dynamics "Dynamics" 'subsection Solver\nset Dynamics = quasi\nend'
 check antiplane-wedge "Displacement = antiplane" 'set Displacement = antiplane'
 
-# Scene = mesh-file (issue 16): tags, cells, the contact's plane, the
+# Scene = mesh-file: tags, cells, the contact's plane, the
 # vectors and the function-valued friction; the meshes are in tests/meshes.
 check_mesh() { # name, expected word, mesh (in tests/meshes), prm body
   local name=$1 word=$2 mesh=$3 body=$4

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Kill-and-resume test (issue 6): a short coarse wedge run is killed with
+# Kill-and-resume test: a short coarse wedge run is killed with
 # SIGKILL after it has written a checkpoint, resumed with --resume, and its
 # run folder compared with that of an uninterrupted run. Expected: bitwise
 # identical time-series.csv, base-profile.csv, events.csv, the SEAS files
@@ -7,8 +7,8 @@
 # with its cached candidate step): the computation is deterministic and the
 # checkpoint holds everything the time loop carries. Also checks that
 # SIGINT stops a run with exit code 130 and a resumable folder. The same
-# for the spring-slider, which runs through the same run loop (issue 12),
-# with step doubling and with local extrapolation (issue 13).
+# for the spring-slider, which runs through the same simulator,
+# with step doubling and with local extrapolation.
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3

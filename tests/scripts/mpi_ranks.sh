@@ -1,5 +1,5 @@
 #!/bin/bash
-# Runs under mpirun (issue 14): the spring-slider, which has one unknown,
+# Runs under mpirun: the spring-slider, which has one unknown,
 # started on 2 ranks must stop with one line (not one per rank) naming
 # `Scene` and the rank count, exit non-zero and write nothing; on 1 rank
 # under mpirun it runs (its events.csv has events). Bad input on 2 ranks

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Numerical-failure test (issue 6): provokes each failure of a spatial
+# Numerical-failure test: provokes each failure of a spatial
 # problem and checks that the step is rejected and halved down to the
 # minimum step, and that the run then stops with exit status 1, a diagnosis
 # (time, which quantity; for non-finite values where on the base) and a

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Run-folder integrity test (issue 18). On a short coarse wedge run:
+# Run-folder integrity test. On a short coarse wedge run:
 #  - a checkpoint cut to 1000 bytes, one with 64 bytes overwritten in the
 #    middle, one from another mesh (one refinement less) and one whose
 #    format version is patched to 2 are each refused by --resume with exit
@@ -116,8 +116,8 @@ refused damaged "head -c 64 /dev/zero | tr '\\0' 'Z' | dd of=checkpoint.bin bs=1
   "checksum mismatch: the checkpoint is damaged"
 refused other-mesh 'cp ../coarser/checkpoint.bin checkpoint.bin' \
   "written for $(grep -o '[0-9]* unknowns' coarser.log | head -1), this run has $(grep -o '[0-9]* unknowns' wedge.log | head -1 | cut -d' ' -f1)"
-refused other-format "printf '\\x03' | dd of=checkpoint.bin bs=1 seek=8 conv=notrunc 2> /dev/null" \
-  "written in checkpoint format 3"
+refused other-format "printf '\\x04' | dd of=checkpoint.bin bs=1 seek=8 conv=notrunc 2> /dev/null" \
+  "written in checkpoint format 4"
 
 # the advice of the message: the previous checkpoint continues the run
 mv truncated/checkpoint.bin.prev truncated/checkpoint.bin

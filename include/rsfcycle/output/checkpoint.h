@@ -13,11 +13,12 @@ namespace rsfcycle
   {
     /**
      * The checkpoint format this program writes and reads. Increase it
-     * whenever the header or anything serialised changes (the run loop's
-     * LoopState, the controller memory, a model's save_output): a
-     * checkpoint of another format is refused on resume, never misread.
+     * whenever the header or anything serialised changes (the simulator's
+     * LoopState, the integrator's memory, a writer's save()): a checkpoint
+     * of another format is refused on resume, never misread. Format 3: the
+     * writers keep their own times and file sizes.
      */
-    constexpr std::uint32_t checkpoint_format = 2;
+    constexpr std::uint32_t checkpoint_format = 3;
 
     /**
      * What a checkpoint was written for, given by the model: its scene, the

@@ -5,8 +5,10 @@
 #include <fstream>
 #include <memory>
 #include <rsfcycle/output/csv_row.h>
-#include <rsfcycle/output/seas_parameters.h>
-#include <rsfcycle/time/model.h>
+#include <rsfcycle/output/files.h>
+#include <rsfcycle/output/sample.h>
+#include <rsfcycle/output/writer.h>
+#include <rsfcycle/seas_parameters.h>
 #include <string>
 #include <vector>
 
@@ -26,14 +28,14 @@ namespace rsfcycle
      *  - global.dat: t max_slip_rate moment_rate (s, log10 m/s, N/s per
      *    metre along strike: G int V ds with the entry Shear modulus);
      *  - slip.dat: a row of positions (after two zeros), then t,
-     *    max_slip_rate and the slip at those positions, at the entries'
-     *    intervals (the run loop says when).
+     *    max_slip_rate and the slip at those positions, every `Slip profile
+     *    interval`, during events every `Event slip profile interval`.
      * With `Mirror model` (one side of a fault between two equal bodies
      * computed against a rigid mirror, the SEAS symmetric reduction), the
      * surface stations report the benchmark's side x > 0: half of the
      * model's displacement and rate.
      */
-    class SeasFiles
+    class SeasFiles : public Writer
     {
     public:
       /**
@@ -43,39 +45,53 @@ namespace rsfcycle
        */
       SeasFiles(const std::string    &dir,
                 const SeasParameters &parameters,
-                const time::Layout   &layout);
+                const Layout         &layout);
 
-      /** The files' paths, in the order of sizes(). */
-      const std::vector<std::string> &
-      paths() const
+      std::string
+      name() const override
+      {
+        return "SEAS files";
+      }
+
+      /** The files' paths, in the order of sync()'s sizes. */
+      std::vector<std::string>
+      files() const override
       {
         return file_paths;
       }
 
       /**
        * Create the files with their headers or, with `resume`, open them
-       * for appending (the Recorder has cut them to their checkpoint sizes).
+       * for appending (they have been cut to their checkpoint sizes).
        */
       void
-      open(bool resume);
+      open(bool resume) override;
 
-      /** The station and global rows of an accepted step. */
+      /** The station and global rows of the step, slip.dat when due. */
       void
-      write_step(double t, const time::Sample &sample);
-
-      /** One row of slip.dat. */
-      void
-      write_profile(double t, const time::Sample &sample);
+      write(const Record &record) override;
 
       /** Flush every file; throws file_error if one failed. */
       void
-      flush();
+      flush() override;
 
-      /** The files' sizes (after flush()). */
       std::vector<long long>
-      sizes();
+      sync() override;
+
+      void
+      save(boost::archive::binary_oarchive &archive) const override;
+      void
+      load(boost::archive::binary_iarchive &archive) override;
 
     private:
+      /** The station and global rows of an accepted step. */
+      void
+      write_step(double t, const Sample &sample);
+
+      /** One row of slip.dat. */
+      void
+      write_profile(double t, const Sample &sample);
+
       /** A value at a position: nodes k and k + 1 with weights. */
       struct Interpolation
       {
@@ -97,7 +113,7 @@ namespace rsfcycle
        * state); returns log10 of the maximum slip rate.
        */
       double
-      sort_sample(const time::Sample &sample);
+      sort_sample(const Sample &sample);
 
       /** Throw file_error if a file failed (after a write). */
       void
@@ -106,7 +122,10 @@ namespace rsfcycle
       std::string
       header(const std::string &location) const;
 
-      const SeasParameters       parameters;
+      const SeasParameters parameters;
+      /** Whether this process writes the files (the first rank). */
+      const bool                 writing      = is_root();
+      double                     last_profile = 0;
       std::vector<unsigned int>  order;     // nodes by position
       std::vector<double>        positions; // sorted
       std::vector<double>        weights;   // sorted like positions
@@ -115,7 +134,7 @@ namespace rsfcycle
       std::vector<std::string>   surface_names;
       double                     element_size = 0;
       std::vector<std::string>   file_paths;
-      std::vector<std::unique_ptr<std::ofstream>> files;
+      std::vector<std::unique_ptr<std::ofstream>> streams;
       CsvRow                                      row{10, ' '};
       std::vector<double> slip, rate, log10_rate, stress, log10_state; // sorted
     };

@@ -17,7 +17,7 @@
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/physics/scene.h>
 #include <utility>
 #include <vector>
 
@@ -38,7 +38,7 @@ namespace rsfcycle
      * matrices 2/tau M + C + tau/2 K of the Newmark scheme (15).
      *
      * The deal.II objects are public members for reading: the contact
-     * quadrature, the Newmark step, the linear corrections and the writers
+     * quadrature, the implicit step, the linear corrections and the writers
      * all work on them.
      */
     template <int dim>
@@ -60,9 +60,9 @@ namespace rsfcycle
         bool radiation_damping = false;
       };
 
-      Discretisation(const MeshParameters     &mesh,
-                     const scenes::Scene<dim> &scene,
-                     const Options            &options = Options());
+      Discretisation(const MeshParameters      &mesh,
+                     const physics::Scene<dim> &scene,
+                     const Options             &options = Options());
       ~Discretisation();
 
       /**
@@ -228,15 +228,15 @@ namespace rsfcycle
       near_patch(
         const typename Triangulation<dim>::active_cell_iterator &cell) const;
 
-      const MeshParameters     &mesh;
-      const scenes::Scene<dim> &scene;
-      const Options             options;
+      const MeshParameters      &mesh;
+      const physics::Scene<dim> &scene;
+      const Options              options;
 
       /** M, C, K of a cell in the antiplane model (scalar elasticity). */
       void
       antiplane_cell_matrices(
         const FEValues<dim>               &fe_values,
-        const scenes::Material            &material,
+        const physics::Material           &material,
         std::array<FullMatrix<double>, 3> &matrices) const;
 
       /** The scene's shear prestress on the contact (empty: none). */
@@ -252,10 +252,10 @@ namespace rsfcycle
        */
       template <class Iterator>
       void
-      add_contact_terms(const Iterator         &cell,
-                        const scenes::Material *material,
-                        FullMatrix<double>     *cell_viscosity,
-                        Vector<double>         *cell_force) const;
+      add_contact_terms(const Iterator          &cell,
+                        const physics::Material *material,
+                        FullMatrix<double>      *cell_viscosity,
+                        Vector<double>          *cell_force) const;
 
       /**
        * Calls function(fe_face) for each face of the cell on the boundary
@@ -277,9 +277,9 @@ namespace rsfcycle
        */
       template <class Iterator>
       void
-      add_absorbing_terms(const Iterator         &cell,
-                          const scenes::Material &material,
-                          FullMatrix<double>     &cell_viscosity) const;
+      add_absorbing_terms(const Iterator          &cell,
+                          const physics::Material &material,
+                          FullMatrix<double>      &cell_viscosity) const;
 
       struct StepMatrix
       {

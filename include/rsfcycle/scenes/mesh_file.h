@@ -5,9 +5,9 @@
 #include <deal.II/grid/tria.h>
 #include <map>
 #include <memory>
+#include <rsfcycle/physics/scene.h>
 #include <rsfcycle/scenes/contact_patch.h>
 #include <rsfcycle/scenes/friction_field.h>
-#include <rsfcycle/scenes/scene.h>
 #include <string>
 #include <vector>
 
@@ -15,6 +15,10 @@ namespace rsfcycle
 {
   namespace scenes
   {
+    using namespace dealii;
+    using physics::Material;
+    using physics::Scene;
+
     /**
      * A scene that is pure data: a gmsh mesh (quadrilaterals in 2D,
      * hexahedra in 3D) whose physical tags the .prm maps to roles

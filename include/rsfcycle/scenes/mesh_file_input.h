@@ -4,13 +4,16 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 #include <map>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/physics/scene.h>
 #include <string>
 
 namespace rsfcycle
 {
   namespace scenes
   {
+    using physics::Material;
+    using physics::Scene;
+
     /**
      * The text entries of Scene = mesh-file (subsection "Mesh file"),
      * parsed and checked; every error throws std::invalid_argument with a

@@ -5,13 +5,16 @@
 #include <memory>
 #include <ostream>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/scene.h>
+#include <rsfcycle/physics/scene.h>
 #include <string>
 
 namespace rsfcycle
 {
   namespace scenes
   {
+    using namespace dealii;
+    using physics::Scene;
+
     using dealii::ParameterHandler;
 
     /**
@@ -24,9 +27,13 @@ namespace rsfcycle
     std::string
     scene_names();
 
-    /** Declare the parameters of every scene (one subsection each). */
+    /**
+     * Declare every parameter of the program: Parameters (with the names of
+     * the scenes, integrators and time schemes) and the subsection of every
+     * scene.
+     */
     void
-    declare_scene_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm);
 
     /**
      * The continuum scene (geometry, materials, friction) of the given name,
@@ -63,8 +70,9 @@ namespace rsfcycle
 
     /**
      * The simulation of `Scene` in `Dimension`: the continuum scenes through
-     * ProblemBase, the spring-slider on its own (no mesh). Bad parameters
-     * throw std::invalid_argument here, before the run folder is touched.
+     * ProblemBase, the spring-slider model (models/spring_slider.h, no
+     * mesh). Bad parameters throw std::invalid_argument here, before the run
+     * folder is touched.
      */
     std::unique_ptr<Simulation>
     make_simulation(const Parameters &parameters, ParameterHandler &prm);

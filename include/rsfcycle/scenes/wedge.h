@@ -2,13 +2,17 @@
 #define rsfcycle_scenes_wedge_h
 
 #include <memory>
+#include <rsfcycle/physics/scene.h>
 #include <rsfcycle/scenes/friction_field.h>
-#include <rsfcycle/scenes/scene.h>
 
 namespace rsfcycle
 {
   namespace scenes
   {
+    using namespace dealii;
+    using physics::Material;
+    using physics::Scene;
+
     /**
      * The laboratory subduction wedge of the paper (MODEL.md §5; §6 in 3D,
      * where it is extruded in z). In physical coordinates (metres, trench

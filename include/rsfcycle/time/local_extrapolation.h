@@ -7,7 +7,7 @@
 #include <functional>
 #include <optional>
 #include <rsfcycle/format.h>
-#include <rsfcycle/time/controller.h>
+#include <rsfcycle/time/integrator.h>
 #include <string>
 #include <vector>
 
@@ -47,7 +47,7 @@ namespace rsfcycle
      * result.
      */
     template <typename State>
-    class LocalExtrapolation : public Controller<State>
+    class LocalExtrapolation : public Integrator<State>
     {
     public:
       /**
@@ -156,10 +156,10 @@ namespace rsfcycle
        * {pending,} history; values = {pending step length or 0}, history
        * times.
        */
-      ControllerMemory<State>
+      IntegratorMemory<State>
       memory() const override
       {
-        ControllerMemory<State> memory;
+        IntegratorMemory<State> memory;
         memory.controller = "local-extrapolation";
         memory.step_size  = tau;
         memory.values     = {pending ? pending_step : 0.};
@@ -175,7 +175,7 @@ namespace rsfcycle
       }
 
       void
-      restore(const ControllerMemory<State> &memory) override
+      restore(const IntegratorMemory<State> &memory) override
       {
         tau = memory.step_size;
         pending.reset();

@@ -3,27 +3,22 @@
 
 #include <cmath>
 #include <optional>
+#include <rsfcycle/parameters.h>
 #include <utility>
 
 namespace rsfcycle
 {
   namespace time
   {
-    /** Rate/state coupling within one time step (MODEL.md §4.1). */
-    enum class Coupling
-    {
-      fixed_point,
-      explicit_decoupling
-    };
-
     /**
      * The coupling between slip rate and state within one time step, generic
-     * in the velocity and state types so that every scene (wedge,
-     * spring-slider) runs the same logic:
+     * in the velocity and state types so that every model (continuum,
+     * spring-slider) runs the same logic (`Solver/Coupling`):
      *  - fixed point (18): alpha^0 = the old state; for k = 1, 2, ...:
      *    solve the velocity v^k with alpha^{k-1}; alpha^k = state update with
-     *    the slip rate |(1 - theta) v_old + theta v^k| of the time step's
-     *    scheme (theta = 1/2: the mean of old and new); stop when
+     *    the slip rate |(1 - lambda) v_old + lambda v^k| of the time step's
+     *    scheme (lambda = TimeScheme::state_weight(); the theta scheme's
+     *    theta, for 1/2 the mean of old and new); stop when
      *    distance(alpha^k, alpha^{k-1}) <= tolerance (19);
      *  - explicit decoupling: the state is updated once with the old slip
      *    rate |v_old|, then the velocity is solved once.
@@ -51,20 +46,20 @@ namespace rsfcycle
               typename UpdateState,
               typename Distance>
     std::optional<unsigned int>
-    couple_rate_and_state(const Coupling     coupling,
-                          const double       tolerance,
-                          const unsigned int max_iterations,
-                          const double       theta,
-                          const Velocity    &v_old,
-                          Velocity          &v,
-                          StateVector       &alpha,
-                          SolveVelocity    &&solve_velocity,
-                          UpdateState      &&update_state,
-                          Distance         &&distance,
+    couple_rate_and_state(const SolverParameters::Coupling coupling,
+                          const double                     tolerance,
+                          const unsigned int               max_iterations,
+                          const double                     state_weight,
+                          const Velocity                  &v_old,
+                          Velocity                        &v,
+                          StateVector                     &alpha,
+                          SolveVelocity                  &&solve_velocity,
+                          UpdateState                    &&update_state,
+                          Distance                       &&distance,
                           double            *last_distance  = nullptr,
                           const unsigned int min_iterations = 1)
     {
-      if (coupling == Coupling::explicit_decoupling)
+      if (coupling == SolverParameters::Coupling::explicit_decoupling)
         {
           update_state(v_old, 0., alpha);
           if (!solve_velocity(alpha, v))
@@ -77,7 +72,7 @@ namespace rsfcycle
         {
           if (!solve_velocity(alpha, v))
             return {};
-          update_state(v, theta, alpha_new);
+          update_state(v, state_weight, alpha_new);
           const double d = distance(alpha_new, alpha);
           if (last_distance != nullptr)
             *last_distance = d;

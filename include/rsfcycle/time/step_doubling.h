@@ -5,7 +5,7 @@
 #include <functional>
 #include <optional>
 #include <rsfcycle/format.h>
-#include <rsfcycle/time/controller.h>
+#include <rsfcycle/time/integrator.h>
 #include <string>
 
 namespace rsfcycle
@@ -26,7 +26,7 @@ namespace rsfcycle
      * problem (the stepper returns no state) counts as "refine".
      */
     template <typename State>
-    class StepDoubling : public Controller<State>
+    class StepDoubling : public Integrator<State>
     {
     public:
       /** One step of length tau from the given state at time t. */
@@ -138,10 +138,10 @@ namespace rsfcycle
       }
 
       /** The step size and the candidate. */
-      ControllerMemory<State>
+      IntegratorMemory<State>
       memory() const override
       {
-        ControllerMemory<State> memory;
+        IntegratorMemory<State> memory;
         memory.controller = "step-doubling";
         memory.step_size  = tau;
         if (r1)
@@ -150,7 +150,7 @@ namespace rsfcycle
       }
 
       void
-      restore(const ControllerMemory<State> &memory) override
+      restore(const IntegratorMemory<State> &memory) override
       {
         tau = memory.step_size;
         r2.reset();

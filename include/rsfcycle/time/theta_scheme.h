@@ -1,15 +1,16 @@
 #ifndef rsfcycle_time_theta_scheme_h
 #define rsfcycle_time_theta_scheme_h
 
-#include <array>
+#include <rsfcycle/time/time_scheme.h>
 
 namespace rsfcycle
 {
   namespace time
   {
     /**
-     * The one-step theta scheme of the time step, for the displacement u,
-     * the velocity v and the acceleration a alike:
+     * The one-step theta scheme (`Solver/Time scheme = theta`, `Solver/
+     * Theta`), for the displacement u, the velocity v and the acceleration
+     * a alike:
      *
      *   u_{n+1} = u_n + tau ((1 - theta) v_n + theta v_{n+1}),
      *   v_{n+1} = v_n + tau ((1 - theta) a_n + theta a_{n+1}).
@@ -20,73 +21,87 @@ namespace rsfcycle
      * elastic modes in the quasi-static equation) change sign from step to
      * step and hardly decay. theta = 1 is backward Euler: first order,
      * L-stable, such modes vanish within a step. The unknown of the step is
-     * v_{n+1}; with M a_{n+1} + C v_{n+1} + K u_{n+1} = f the step matrix is
-     * M / (theta tau) + C + theta tau K (quasi-static: without M).
+     * w = v_{n+1}; the step matrix is M / (theta tau) + C + theta tau K, and
+     * the state update takes the slip rate of (1 - theta) v_n + theta
+     * v_{n+1} (the paper's mean of old and new for theta = 1/2, (16)).
      */
-    struct ThetaScheme
+    class ThetaScheme : public TimeScheme
     {
-      double theta   = 0.5;
-      bool   dynamic = true;
+    public:
+      explicit ThetaScheme(const double theta = 0.5)
+        : theta(theta)
+      {}
 
-      /** The factors of M, C and K in the step matrix. */
-      std::array<double, 3>
-      step_coefficients(const double tau) const
+      std::string
+      name() const override
       {
-        return {{dynamic ? 1. / (theta * tau) : 0., 1., theta * tau}};
+        return "theta";
       }
 
-      /** The weight of v_n in u_{n+1} and in the state update: 1 - theta. */
+      std::array<double, 3>
+      step_coefficients(const double tau) const override
+      {
+        return {{1. / (theta * tau), 1., theta * tau}};
+      }
+
+      double
+      load_fraction() const override
+      {
+        return 1;
+      }
+
+      std::array<double, 2>
+      known_displacement() const override
+      {
+        return {{old_weight(), 0.}};
+      }
+
+      std::array<double, 2>
+      known_inertia(const double tau) const override
+      {
+        return {{1. / (theta * tau), old_weight() / theta}};
+      }
+
+      double
+      state_weight() const override
+      {
+        return theta;
+      }
+
+      std::array<double, 2>
+      new_velocity() const override
+      {
+        return {{1., 0.}};
+      }
+
+      std::array<double, 2>
+      new_acceleration(const double tau) const override
+      {
+        return {{1. / (theta * tau), -old_weight() / theta}};
+      }
+
+      std::array<double, 4>
+      new_displacement() const override
+      {
+        return {{old_weight(), theta, 0., 0.}};
+      }
+
+      /** 3 for theta = 1/2 (second order), 2 otherwise. */
+      double
+      local_error_order() const override
+      {
+        return theta == 0.5 ? 3. : 2.;
+      }
+
+    private:
+      /** The weight of the old step, 1 - theta. */
       double
       old_weight() const
       {
         return 1 - theta;
       }
 
-      /** u_{n+1} = u_n + tau (old_weight() v_n + theta v_{n+1}). */
-      template <typename Number>
-      Number
-      displacement(const Number u_old,
-                   const Number v_old,
-                   const Number v_new,
-                   const double tau) const
-      {
-        return u_old + tau * (old_weight() * v_old + theta * v_new);
-      }
-
-      /**
-       * The part of M a_{n+1} known from the old step, divided by M:
-       * v_n / (theta tau) + (1 - theta) / theta a_n.
-       */
-      template <typename Number>
-      Number
-      inertia_from_old(const Number v_old,
-                       const Number a_old,
-                       const double tau) const
-      {
-        return 1. / (theta * tau) * v_old + old_weight() / theta * a_old;
-      }
-
-      /** a_{n+1} = (v_{n+1} - v_n) / (theta tau) - (1 - theta) / theta a_n. */
-      template <typename Number>
-      Number
-      acceleration(const Number v_old,
-                   const Number v_new,
-                   const Number a_old,
-                   const double tau) const
-      {
-        return 1. / (theta * tau) * (v_new - v_old) -
-               old_weight() / theta * a_old;
-      }
-
-      /**
-       * The power of tau of the local error: 3 for theta = 1/2 (second
-       * order), 2 otherwise.
-       */
-      double
-      local_error_order() const
-      {
-        return theta == 0.5 ? 3. : 2.;
-      }
+      const double theta;
     };
   } // namespace time
 } // namespace rsfcycle

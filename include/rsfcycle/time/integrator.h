@@ -1,5 +1,5 @@
-#ifndef rsfcycle_time_controller_h
-#define rsfcycle_time_controller_h
+#ifndef rsfcycle_time_integrator_h
+#define rsfcycle_time_integrator_h
 
 #include <optional>
 #include <stdexcept>
@@ -18,15 +18,15 @@ namespace rsfcycle
     };
 
     /**
-     * What a controller carries from one advance() to the next, in a form a
-     * checkpoint can hold: the step size, states it keeps (a step already
+     * What an integrator carries from one advance() to the next, in a form
+     * a checkpoint can hold: the step size, states it keeps (a step already
      * computed, or the history of accepted states) and numbers (their
      * times).
      */
     template <typename State>
-    struct ControllerMemory
+    struct IntegratorMemory
     {
-      std::string         controller; // the name of the controller
+      std::string         controller; // the name of the step-size control
       double              step_size = 0;
       std::vector<State>  states;
       std::vector<double> values;
@@ -40,16 +40,18 @@ namespace rsfcycle
     };
 
     /**
-     * A step-size controller: advances a state by one accepted step. The
-     * run loop (RunLoop) uses only this interface, so that step doubling
-     * (MODEL.md §4.3), other controllers and, for the spring-slider, an
-     * external ODE integrator plug in without touching the loop.
+     * A time integrator: advances a model's state by one accepted step. The
+     * simulator uses only this interface. The implicit step of a model under
+     * step-size control (StepDoubling, LocalExtrapolation: MODEL.md §4.3)
+     * and an ODE integrator that chooses its own steps (ArkodeIntegrator)
+     * are integrators; time/integrators.h makes the one that
+     * `Time stepping/Integrator` names.
      */
     template <typename State>
-    class Controller
+    class Integrator
     {
     public:
-      virtual ~Controller() = default;
+      virtual ~Integrator() = default;
 
       /**
        * Advance `current` from time t by one accepted step (t is updated),
@@ -75,18 +77,18 @@ namespace rsfcycle
        * Everything the next advance() depends on: a checkpoint stores it so
        * that a resumed run repeats the uninterrupted one exactly.
        */
-      virtual ControllerMemory<State>
+      virtual IntegratorMemory<State>
       memory() const = 0;
 
       /**
-       * Restore the memory from a checkpoint; of another controller's
-       * memory (a run resumed with another `Controller`), only the step
-       * size.
+       * Restore the memory from a checkpoint; of another step-size
+       * control's memory (a run resumed with another `Controller`), only
+       * the step size.
        */
       virtual void
-      restore(const ControllerMemory<State> &memory) = 0;
+      restore(const IntegratorMemory<State> &memory) = 0;
 
-      /** Whether the controller's state fits in a checkpoint. */
+      /** Whether the integrator's state fits in a checkpoint. */
       virtual bool
       can_checkpoint() const
       {

@@ -3,22 +3,23 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <map>
-#include <rsfcycle/friction/contact_quadrature.h>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/physics/contact_quadrature.h>
 
 namespace rsfcycle
 {
-  namespace friction
+  namespace physics
   {
     template <int dim>
     void
     ContactQuadrature<dim>::setup(
-      const DoFHandler<dim>                               &dof_handler,
-      const DoFHandler<dim>                               &scalar_dof_handler,
-      const AffineConstraints<double>                     &hanging_constraints,
-      const Utilities::MPI::Partitioner                   &partitioner,
-      const std::vector<bool>                             &fixed,
-      const std::function<Parameters(const Point<dim> &)> &parameters_at)
+      const DoFHandler<dim>             &dof_handler,
+      const DoFHandler<dim>             &scalar_dof_handler,
+      const AffineConstraints<double>   &hanging_constraints,
+      const Utilities::MPI::Partitioner &partitioner,
+      const std::vector<bool>           &fixed,
+      const std::function<friction::Parameters(const Point<dim> &)>
+        &parameters_at)
     {
       communicator = partitioner.get_mpi_communicator();
       n_ranks      = Utilities::MPI::n_mpi_processes(communicator);
@@ -227,10 +228,10 @@ namespace rsfcycle
 
 
     template <int dim>
-    std::vector<NodePotential>
-    ContactQuadrature<dim>::potentials(const Law &law) const
+    std::vector<friction::NodePotential>
+    ContactQuadrature<dim>::potentials(const friction::Law &law) const
     {
-      std::vector<NodePotential> result(node_info.size());
+      std::vector<friction::NodePotential> result(node_info.size());
       for (unsigned int k = 0; k < node_info.size(); ++k)
         {
           result[k].law          = &law;
@@ -245,5 +246,5 @@ namespace rsfcycle
 
     template class ContactQuadrature<2>;
     template class ContactQuadrature<3>;
-  } // namespace friction
+  } // namespace physics
 } // namespace rsfcycle

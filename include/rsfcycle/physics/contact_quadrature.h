@@ -1,5 +1,5 @@
-#ifndef rsfcycle_friction_contact_quadrature_h
-#define rsfcycle_friction_contact_quadrature_h
+#ifndef rsfcycle_physics_contact_quadrature_h
+#define rsfcycle_physics_contact_quadrature_h
 
 #include <array>
 #include <deal.II/base/mpi.h>
@@ -16,7 +16,7 @@
 
 namespace rsfcycle
 {
-  namespace friction
+  namespace physics
   {
     using namespace dealii;
 
@@ -40,7 +40,7 @@ namespace rsfcycle
         Point<dim>              position;
         double                  weight       = 0;
         double                  normal_force = 0;
-        Parameters              params;
+        friction::Parameters    params;
         types::global_dof_index scalar_dof = 0;
         types::global_dof_index normal_dof = 0;
       };
@@ -57,7 +57,8 @@ namespace rsfcycle
             const AffineConstraints<double>   &hanging_constraints,
             const Utilities::MPI::Partitioner &partitioner,
             const std::vector<bool>           &fixed,
-            const std::function<Parameters(const Point<dim> &)> &parameters_at);
+            const std::function<friction::Parameters(const Point<dim> &)>
+              &parameters_at);
 
       /**
        * Normal forces |r_i| from the reaction r = K u - f of the gravity
@@ -95,8 +96,8 @@ namespace rsfcycle
        * state alpha not yet set (the cohesion force w_i C_i from the node's
        * parameters).
        */
-      std::vector<NodePotential>
-      potentials(const Law &law) const;
+      std::vector<friction::NodePotential>
+      potentials(const friction::Law &law) const;
 
       const std::vector<NodeInfo> &
       nodes() const
@@ -151,7 +152,7 @@ namespace rsfcycle
       /** Sorted position k -> index in the rank-by-rank list. */
       std::vector<unsigned int> order;
     };
-  } // namespace friction
+  } // namespace physics
 } // namespace rsfcycle
 
 #endif

@@ -1,15 +1,17 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <iomanip>
+#include <rsfcycle/friction/local_solve.h>
+#include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/output/files.h>
-#include <rsfcycle/scenes/spring_slider.h>
-#include <rsfcycle/time/make_controller.h>
-#include <rsfcycle/time/run_loop.templates.h>
+#include <rsfcycle/simulator/simulator.templates.h>
+#include <rsfcycle/time/rate_state_coupling.h>
+#include <rsfcycle/time/schemes.h>
 #include <stdexcept>
 
 namespace rsfcycle
 {
-  namespace scenes
+  namespace models
   {
     using dealii::Patterns::Anything;
     using dealii::Patterns::Double;
@@ -34,14 +36,6 @@ namespace rsfcycle
     SpringSlider::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Spring slider");
-      prm.declare_entry("Integrator",
-                        "newmark",
-                        Selection("newmark|arkode"),
-                        "newmark: the scheme of the wedge (Newmark, "
-                        "rate/state coupling, steps chosen by Time "
-                        "stepping/Controller); arkode: the SUNDIALS ARKODE "
-                        "reference with relative tolerance = Time "
-                        "stepping/Tolerance (requires Cohesion = 0)");
       prm.declare_entry("Mass",
                         "0",
                         Double(0),
@@ -102,12 +96,14 @@ namespace rsfcycle
       prm.declare_entry("Reference output period",
                         "1",
                         Double(1e-300),
-                        "ARKODE integrator only: the reference is sampled "
-                        "(interpolated) at this interval [s]");
+                        "With Time stepping/Integrator = arkode: the "
+                        "solution is sampled (interpolated) at this "
+                        "interval [s]");
       prm.declare_entry("Reference sample spacing",
                         "0.01",
                         Double(0),
-                        "ARKODE integrator only: samples are in addition at "
+                        "With Time stepping/Integrator = arkode: samples are "
+                        "in addition at "
                         "most this multiple of L / V apart, to resolve event "
                         "starts and peak slip rates; 0: only the output "
                         "period (deal.II stops ARKODE at every sample, so "
@@ -120,12 +116,9 @@ namespace rsfcycle
                                ParameterHandler &prm)
       : parameters(parameters)
       , law(*parameters.solver.law)
-      , coupling(parameters.solver.coupling == "explicit" ?
-                   time::Coupling::explicit_decoupling :
-                   time::Coupling::fixed_point)
+      , scheme(time::make_scheme(parameters.solver))
     {
       prm.enter_subsection("Spring slider");
-      integrator       = prm.get("Integrator");
       mass             = prm.get_double("Mass");
       stiffness        = prm.get_double("Stiffness");
       normal_stress    = prm.get_double("Normal stress");
@@ -146,7 +139,7 @@ namespace rsfcycle
       prm.leave_subsection();
       // quasi-dynamic is quasi-static here: the damping is the scene's
       // `Radiation damping` in every mode
-      if (parameters.solver.dynamics != "dynamic")
+      if (parameters.solver.dynamics != SolverParameters::Dynamics::dynamic)
         mass = 0;
       if (mass == 0 && damping == 0 && stiffness == 0)
         throw std::invalid_argument(
@@ -199,23 +192,27 @@ namespace rsfcycle
 
 
     std::optional<SpringSlider::State>
-    SpringSlider::newmark_step(const State &old,
-                               const double t,
-                               const double tau,
-                               const State *guess) const
+    SpringSlider::step(const State &old,
+                       const double t,
+                       const double tau,
+                       const State *guess)
     {
-      // (15) for one degree of freedom; the spring force at t + tau is
-      // tau0 + k (u_lp - delta_n), delta_n = delta + tau/2 (V_old + V_n)
-      // (theta = 1/2; time::ThetaScheme in general).
-      const time::ThetaScheme scheme = parameters.solver.scheme();
-      const auto              c      = scheme.step_coefficients(tau);
+      // The step (15) of the time scheme for one degree of freedom: the
+      // spring force at the scheme's time is tau0 + k (u_lp - delta*),
+      // delta* = delta_n + tau (d[0] V_n + tau d[1] V'_n) + c_K V (theta =
+      // 1/2:
+      // delta_n + tau/2 (V_n + V)).
+      const auto   c = time::step_coefficients(*scheme, tau, mass > 0);
       const double A = c[0] * mass + c[1] * damping + c[2] * stiffness;
+      const auto   d = scheme->known_displacement();
+      const auto   m = scheme->known_inertia(tau);
       const double rhs =
-        prestress + stiffness * load_point_displacement(t + tau) -
-        stiffness * scheme.displacement(old.slip, old.velocity, 0., tau) +
-        (mass > 0 ?
-           mass * scheme.inertia_from_old(old.velocity, old.acceleration, tau) :
-           0.);
+        prestress +
+        stiffness * load_point_displacement(t + scheme->load_fraction() * tau) -
+        stiffness * (old.slip + tau * (d[0] * old.velocity +
+                                       tau * d[1] * old.acceleration)) +
+        (mass > 0 ? mass * (m[0] * old.velocity + m[1] * old.acceleration) :
+                    0.);
 
       friction::NodePotential phi;
       phi.law            = &law;
@@ -223,16 +220,15 @@ namespace rsfcycle
       phi.normal_force   = normal_stress;
       phi.cohesion_force = cohesion;
 
-      State      next       = old;
-      double     v          = guess ? guess->velocity : old.velocity;
+      double     w          = guess ? guess->velocity : old.velocity;
       double     alpha      = guess ? guess->alpha : old.alpha;
       const auto iterations = time::couple_rate_and_state(
-        coupling,
+        parameters.solver.coupling,
         parameters.solver.fixed_point_tolerance,
         parameters.solver.max_fixed_point_iterations,
-        scheme.theta,
+        scheme->state_weight(),
         old.velocity,
-        v,
+        w,
         alpha,
         [&](const double a, double &x) {
           phi.set_state(a);
@@ -241,25 +237,28 @@ namespace rsfcycle
             friction::solve_local_problem<1>({{A}}, {{rhs}}, phi, &guess).x[0];
           return std::isfinite(x);
         },
-        [&](const double v_new, const double weight_new, double &a) {
+        [&](const double w_new, const double weight_new, double &a) {
           const double V =
-            std::abs((1 - weight_new) * old.velocity + weight_new * v_new);
+            std::abs((1 - weight_new) * old.velocity + weight_new * w_new);
           a = law.update_state(friction, old.alpha, V, tau);
         },
         [](const double a1, const double a2) { return std::abs(a1 - a2); });
       if (!iterations)
         return {};
 
-      next.velocity               = v;
+      State      next             = old;
+      const auto e                = scheme->new_velocity();
+      const auto g                = scheme->new_acceleration(tau);
+      const auto h                = scheme->new_displacement();
+      next.velocity               = e[0] * w + e[1] * old.velocity;
       next.alpha                  = alpha;
       next.fixed_point_iterations = *iterations;
-      next.slip =
-        scheme.displacement(old.slip, old.velocity, next.velocity, tau);
-      next.acceleration = mass > 0 ? scheme.acceleration(old.velocity,
-                                                         next.velocity,
-                                                         old.acceleration,
-                                                         tau) :
+      next.acceleration = mass > 0 ? g[0] * (next.velocity - old.velocity) +
+                                       g[1] * old.acceleration :
                                      0.;
+      next.slip =
+        old.slip + tau * (h[0] * old.velocity + h[1] * next.velocity) +
+        tau * tau * (h[2] * old.acceleration + h[3] * next.acceleration);
       if (!std::isfinite(next.slip) || !std::isfinite(next.alpha) ||
           !std::isfinite(next.acceleration))
         return {};
@@ -267,10 +266,26 @@ namespace rsfcycle
     }
 
 
-    time::Layout
+    SpringSlider::State
+    SpringSlider::predict(const std::array<const State *, 3> &s,
+                          const std::array<double, 3>        &w) const
+    {
+      State p;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          p.slip += w[i] * s[i]->slip;
+          p.velocity += w[i] * s[i]->velocity;
+          p.acceleration += w[i] * s[i]->acceleration;
+          p.alpha += w[i] * s[i]->alpha;
+        }
+      return p;
+    }
+
+
+    output::Layout
     SpringSlider::layout() const
     {
-      time::Layout layout;
+      output::Layout layout;
       layout.positions               = {0.};
       layout.weights                 = {1.}; // per unit area
       layout.observation_names       = {"slip_m",
@@ -283,10 +298,10 @@ namespace rsfcycle
     }
 
 
-    time::Sample
+    output::Sample
     SpringSlider::sample(const State &s) const
     {
-      time::Sample sample;
+      output::Sample sample;
       sample.slip_rates                        = {std::abs(s.velocity)};
       sample.slip                              = {{{s.slip, 0.}}};
       sample.observations                      = {s.slip,
@@ -306,19 +321,104 @@ namespace rsfcycle
     {
       log << "Scene: spring-slider ("
           << (mass > 0 ? "dynamic" : "quasi-dynamic") << "), integrator "
-          << integrator << "\n"
+          << parameters.time_stepping.integrator << "\n"
           << "Stiffness k / k_crit = " << stiffness / critical_stiffness()
           << " (k_crit = (b - a) |sigma_n| / L = " << critical_stiffness()
-          << " Pa/m)\n";
-      if (integrator == "arkode")
-        log << "ARKODE reference: relative tolerance "
-            << parameters.time_stepping.tolerance << ", "
-            << (mass > 0 ? "variables (slip, V, alpha)" :
-                           "variables (slip, log V, alpha)")
-            << std::endl;
+          << " Pa/m)\n"
+          << "Solver: " << scheme->name() << " scheme, "
+          << name_of(parameters.solver.coupling) << " coupling, " << law.name()
+          << " law; as an ODE in "
+          << (mass > 0 ? "(slip, V, alpha)" : "(slip, log V, alpha)")
+          << std::endl;
+    }
+
+
+    std::string
+    SpringSlider::ode_refusal() const
+    {
+      if (cohesion != 0)
+        return "Spring slider/Cohesion = " + std::to_string(cohesion) +
+               ": Time stepping/Integrator = arkode requires Cohesion = 0 "
+               "(the cohesion makes the ODE non-smooth at V = 0)";
+      return {};
+    }
+
+
+    SpringSlider::Vector
+    SpringSlider::to_ode(const State &state) const
+    {
+      Vector y(3);
+      y[0] = state.slip;
+      y[1] = mass > 0 ? state.velocity : std::log(state.velocity);
+      y[2] = state.alpha;
+      return y;
+    }
+
+
+    SpringSlider::State
+    SpringSlider::from_ode(const Vector &y, const double t) const
+    {
+      State s;
+      s.slip     = y[0];
+      s.velocity = mass > 0 ? y[1] : std::exp(y[1]);
+      s.alpha    = y[2];
+      Vector dy(3);
+      ode_rhs(t, y, dy);
+      s.acceleration = mass > 0 ? dy[1] : s.velocity * dy[1];
+      return s;
+    }
+
+
+    int
+    SpringSlider::ode_rhs(const double t, const Vector &y, Vector &dy) const
+    {
+      const bool   dynamic = mass > 0;
+      const double V       = dynamic ? y[1] : std::exp(y[1]);
+      const double Va      = std::abs(V);
+      const double da      = law.state_rate(friction, y[2], Va);
+      const double mu      = law.friction_coefficient(friction, y[2], Va);
+      const double tau =
+        prestress + stiffness * (load_point_displacement(t) - y[0]);
+      dy[0] = V;
+      dy[2] = da;
+      if (dynamic)
+        dy[1] =
+          (tau - normal_stress * std::copysign(mu, V) - damping * V) / mass;
       else
-        log << "Solver: " << parameters.solver.coupling << " coupling, "
-            << law.name() << " law" << std::endl;
+        {
+          // d/dt of tau0 + k(u_lp - delta) = N mu(V, alpha) + eta V, with
+          // V dmu/dV and dmu/dalpha
+          const auto sens = law.sensitivities(friction, y[2], Va);
+          dy[1]           = (stiffness * (load_point_velocity(t) - V) -
+                   normal_stress * sens[1] * da) /
+                  (normal_stress * sens[0] + damping * V);
+        }
+      return std::isfinite(dy[0]) && std::isfinite(dy[1]) &&
+                 std::isfinite(dy[2]) ?
+               0 :
+               1;
+    }
+
+
+    SpringSlider::Vector
+    SpringSlider::ode_absolute_tolerances(const double relative) const
+    {
+      Vector tolerances(3);
+      tolerances[0] = relative * friction.L;
+      tolerances[1] = mass > 0 ? relative * v0 : relative;
+      tolerances[2] = relative;
+      return tolerances;
+    }
+
+
+    double
+    SpringSlider::sample_interval(const State &state) const
+    {
+      return std::min(output_period,
+                      sample_spacing > 0 ?
+                        sample_spacing * friction.L /
+                          std::max(std::abs(state.velocity), 1e-300) :
+                        output_period);
     }
 
 
@@ -330,42 +430,15 @@ namespace rsfcycle
       if (!resume)
         output::write_parameters(parameters.run.output_directory, prm);
 
-      std::unique_ptr<time::Controller<State>> controller;
-      if (integrator == "arkode")
-        controller = make_arkode_reference(*this);
-      else
-        controller = time::make_controller<State>(
-          parameters.time_stepping,
-          [this](const State &s,
-                 const double t0,
-                 const double dt,
-                 const State *guess) { return newmark_step(s, t0, dt, guess); },
-          [](const State &s1, const State &s2) {
-            return std::abs(s1.alpha - s2.alpha);
-          },
-          [](const std::array<const State *, 3> &s,
-             const std::array<double, 3>        &w) {
-            State p;
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                p.slip += w[i] * s[i]->slip;
-                p.velocity += w[i] * s[i]->velocity;
-                p.acceleration += w[i] * s[i]->acceleration;
-                p.alpha += w[i] * s[i]->alpha;
-              }
-            return p;
-          },
-          parameters.solver.scheme().local_error_order());
-
-      dealii::TimerOutput  timer(log,
+      dealii::TimerOutput timer(log,
                                 dealii::TimerOutput::never,
                                 dealii::TimerOutput::wall_times);
-      time::RunLoop<State> loop(parameters, *this, *controller, log, timer);
+      Simulator<State>    simulator(parameters, *this, log, timer);
 
       Summary summary;
-      static_cast<time::RunSummary &>(summary) = loop.run(resume);
-      summary.final_state                      = loop.state();
-      summary.final_friction       = friction_coefficient(loop.state());
+      static_cast<RunSummary &>(summary) = simulator.run(resume);
+      summary.final_state                = simulator.state();
+      summary.final_friction       = friction_coefficient(simulator.state());
       summary.mean_recurrence_time = mean_recurrence_time(summary.events);
       log << "Final: slip = " << std::setprecision(16)
           << summary.final_state.slip
@@ -378,13 +451,10 @@ namespace rsfcycle
           << summary.wall_time << " s" << std::endl;
       return summary;
     }
-  } // namespace scenes
+  } // namespace models
 } // namespace rsfcycle
 
 namespace rsfcycle
 {
-  namespace time
-  {
-    template class RunLoop<scenes::SpringSlider::State>;
-  }
+  template class Simulator<models::SpringSlider::State>;
 } // namespace rsfcycle

@@ -1,6 +1,6 @@
 #include <cmath>
 #include <rsfcycle/format.h>
-#include <rsfcycle/time/newmark_step.h>
+#include <rsfcycle/time/implicit_step.h>
 #include <rsfcycle/time/rate_state_coupling.h>
 #include <sstream>
 
@@ -9,17 +9,19 @@ namespace rsfcycle
   namespace time
   {
     template <int dim>
-    NewmarkStep<dim>::NewmarkStep(
+    ImplicitStep<dim>::ImplicitStep(
       const SolverParameters                           &solver,
+      const TimeScheme                                 &scheme,
       physics::Discretisation<dim>                     &discretisation,
-      const friction::ContactQuadrature<dim>           &contact,
+      const physics::ContactQuadrature<dim>            &contact,
       solvers::TNNMG                                   &tnnmg,
       std::function<double(const dealii::Point<dim> &)> along_base)
       : solver(solver)
+      , scheme(scheme)
+      , inertia(solver.dynamics == SolverParameters::Dynamics::dynamic)
       , discretisation(discretisation)
       , contact(contact)
       , tnnmg(tnnmg)
-      , scheme(solver.scheme())
       , law(*solver.law)
       , along_base(std::move(along_base))
     {}
@@ -27,21 +29,25 @@ namespace rsfcycle
 
     template <int dim>
     la::Vector
-    NewmarkStep<dim>::right_hand_side(const BodyState &old,
-                                      const double     tau) const
+    ImplicitStep<dim>::right_hand_side(const BodyState &old,
+                                       const double     tau) const
     {
       la::Vector rhs(discretisation.body_force), tmp(old.u);
       rhs += discretisation.prestress_force;
-      tmp.add(scheme.old_weight() * tau, old.v);
+      const auto d = scheme.known_displacement();
+      tmp.add(d[0] * tau, old.v);
+      if (d[1] != 0)
+        tmp.add(d[1] * tau * tau, old.a);
       la::Vector Ku;
       Ku.reinit(rhs);
       discretisation.stiffness_local.vmult(Ku, tmp);
       rhs -= Ku;
-      if (scheme.dynamic)
+      if (inertia)
         {
-          tmp = old.a;
-          tmp *= scheme.old_weight() / scheme.theta;
-          tmp.add(1. / (scheme.theta * tau), old.v);
+          const auto m = scheme.known_inertia(tau);
+          tmp          = old.a;
+          tmp *= m[1];
+          tmp.add(m[0], old.v);
           la::Vector Mv;
           Mv.reinit(rhs);
           discretisation.mass_local.vmult(Mv, tmp);
@@ -53,18 +59,18 @@ namespace rsfcycle
 
     template <int dim>
     std::optional<BodyState>
-    NewmarkStep<dim>::operator()(const BodyState &old,
-                                 const double     t,
-                                 const double     tau,
-                                 const BodyState *guess)
+    ImplicitStep<dim>::operator()(const BodyState &old,
+                                  const double     t,
+                                  const double     tau,
+                                  const BodyState *guess)
     {
-      const auto             coefficients = scheme.step_coefficients(tau);
+      const auto coefficients    = step_coefficients(scheme, tau, inertia);
       const la::LocalMatrix &A   = discretisation.step_matrix(coefficients);
       const la::Vector       rhs = right_hand_side(old, tau);
 
       BodyState next;
       next.v = guess ? guess->v : old.v;
-      discretisation.set_fixed_values(next.v, t + tau);
+      discretisation.set_fixed_values(next.v, t + scheme.load_fraction() * tau);
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
 
@@ -97,13 +103,13 @@ namespace rsfcycle
 
     template <int dim>
     bool
-    NewmarkStep<dim>::couple(const BodyState                      &old,
-                             const std::vector<double>            &alpha_start,
-                             const solvers::SpatialProblem        &problem,
-                             std::vector<friction::NodePotential> &potentials,
-                             const double                          t,
-                             const double                          tau,
-                             BodyState                            &next)
+    ImplicitStep<dim>::couple(const BodyState                      &old,
+                              const std::vector<double>            &alpha_start,
+                              const solvers::SpatialProblem        &problem,
+                              std::vector<friction::NodePotential> &potentials,
+                              const double                          t,
+                              const double                          tau,
+                              BodyState                            &next)
     {
       const unsigned int n_nodes      = contact.n_nodes();
       const auto         update_state = [&](const la::Vector    &v_new,
@@ -115,7 +121,8 @@ namespace rsfcycle
         update_states(old, v_new, weight_new, tau, alpha);
       };
 
-      const bool explicit_coupling = solver.coupling == "explicit";
+      const bool explicit_coupling =
+        solver.coupling == SolverParameters::Coupling::explicit_decoupling;
       // Inexact fixed point (`Inner tolerance factor`); a cap of one
       // fixed-point iteration needs that one solve at TNNMG tolerance.
       const bool inexact =
@@ -160,11 +167,10 @@ namespace rsfcycle
         return stats.converged;
       };
       const auto coupled = couple_rate_and_state(
-        explicit_coupling ? Coupling::explicit_decoupling :
-                            Coupling::fixed_point,
+        solver.coupling,
         solver.fixed_point_tolerance,
         solver.max_fixed_point_iterations,
-        scheme.theta,
+        scheme.state_weight(),
         old.v,
         next.v,
         alpha,
@@ -201,11 +207,11 @@ namespace rsfcycle
 
     template <int dim>
     void
-    NewmarkStep<dim>::update_states(const BodyState     &old,
-                                    const la::Vector    &v_new,
-                                    const double         weight_new,
-                                    const double         tau,
-                                    std::vector<double> &alpha) const
+    ImplicitStep<dim>::update_states(const BodyState     &old,
+                                     const la::Vector    &w,
+                                     const double         weight_new,
+                                     const double         tau,
+                                     std::vector<double> &alpha) const
     {
       const auto &nodes = contact.contact_set().nodes;
       for (unsigned int k = 0; k < nodes.size(); ++k)
@@ -215,7 +221,7 @@ namespace rsfcycle
             {
               const auto dof = nodes[k].dofs[l];
               vm[l]          = (1 - weight_new) * old.v.local_element(dof) +
-                      weight_new * v_new.local_element(dof);
+                      weight_new * w.local_element(dof);
             }
           alpha[k] = law.update_state(contact.nodes()[k].params,
                                       old.alpha[k],
@@ -227,11 +233,11 @@ namespace rsfcycle
 
     template <int dim>
     std::string
-    NewmarkStep<dim>::tnnmg_failure(const solvers::TNNMGStatistics &stats,
-                                    const double                    t,
-                                    const double                    tau,
-                                    const unsigned int              k,
-                                    const la::Vector               &v) const
+    ImplicitStep<dim>::tnnmg_failure(const solvers::TNNMGStatistics &stats,
+                                     const double                    t,
+                                     const double                    tau,
+                                     const unsigned int              k,
+                                     const la::Vector               &v) const
     {
       std::ostringstream message;
       message << "t = " << t + tau << " s, step " << tau << " s: TNNMG "
@@ -247,33 +253,46 @@ namespace rsfcycle
 
     template <int dim>
     bool
-    NewmarkStep<dim>::complete(const BodyState       &old,
-                               const la::LocalMatrix &A,
-                               const la::Vector      &rhs,
-                               const double           t,
-                               const double           tau,
-                               BodyState             &next)
+    ImplicitStep<dim>::complete(const BodyState       &old,
+                                const la::LocalMatrix &A,
+                                const la::Vector      &rhs,
+                                const double           t,
+                                const double           tau,
+                                BodyState             &next)
     {
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
-      next.u = old.u;
-      next.u.add(scheme.old_weight() * tau, old.v, scheme.theta * tau, next.v);
-      if (scheme.dynamic)
+      // the friction force acts at w: the residual below needs it
+      la::Vector w;
+      const auto e = scheme.new_velocity();
+      if (e[0] != 1 || e[1] != 0)
         {
-          next.a = next.v;
+          w = next.v;
+          next.v.sadd(e[0], e[1], old.v);
+        }
+      const la::Vector &w_or_v = (e[0] != 1 || e[1] != 0) ? w : next.v;
+      if (inertia)
+        {
+          const auto g = scheme.new_acceleration(tau);
+          next.a       = next.v;
           next.a -= old.v;
-          next.a *= 1. / (scheme.theta * tau);
-          next.a.add(-scheme.old_weight() / scheme.theta, old.a);
+          next.a *= g[0];
+          next.a.add(g[1], old.a);
         }
       else
         next.a.reinit(old.a);
+      const auto h = scheme.new_displacement();
+      next.u       = old.u;
+      next.u.add(h[0] * tau, old.v, h[1] * tau, next.v);
+      if (h[2] != 0 || h[3] != 0)
+        next.u.add(h[2] * tau * tau, old.a, h[3] * tau * tau, next.a);
 
       // Friction force per node from the equilibrium, r - A v (tangential).
       const auto        &nodes   = contact.contact_set().nodes;
       const unsigned int n_nodes = nodes.size();
       la::Vector         residual;
       residual.reinit(rhs);
-      A.residual(residual, next.v, rhs);
+      A.residual(residual, w_or_v, rhs);
       next.shear_traction.resize(n_nodes);
       for (unsigned int k = 0; k < n_nodes; ++k)
         {
@@ -313,18 +332,18 @@ namespace rsfcycle
 
 
     template <int dim>
-    StepStatistics
-    NewmarkStep<dim>::take_work()
+    solvers::StepStatistics
+    ImplicitStep<dim>::take_work()
     {
-      const StepStatistics result = work;
-      work                        = StepStatistics();
+      const solvers::StepStatistics result = work;
+      work                                 = solvers::StepStatistics();
       return result;
     }
 
 
     template <int dim>
     std::string
-    NewmarkStep<dim>::first_non_finite(const la::Vector &v) const
+    ImplicitStep<dim>::first_non_finite(const la::Vector &v) const
     {
       const auto &nodes = contact.contact_set().nodes;
       for (unsigned int k = 0; k < nodes.size(); ++k)
@@ -341,7 +360,7 @@ namespace rsfcycle
     }
 
 
-    template class NewmarkStep<2>;
-    template class NewmarkStep<3>;
+    template class ImplicitStep<2>;
+    template class ImplicitStep<3>;
   } // namespace time
 } // namespace rsfcycle

@@ -1,5 +1,5 @@
-#ifndef rsfcycle_scenes_scene_h
-#define rsfcycle_scenes_scene_h
+#ifndef rsfcycle_physics_scene_h
+#define rsfcycle_physics_scene_h
 
 #include <cmath>
 #include <deal.II/base/bounding_box.h>
@@ -17,7 +17,7 @@
 
 namespace rsfcycle
 {
-  namespace scenes
+  namespace physics
   {
     using namespace dealii;
 
@@ -184,7 +184,7 @@ namespace rsfcycle
         return p[0];
       }
     };
-  } // namespace scenes
+  } // namespace physics
 } // namespace rsfcycle
 
 #endif

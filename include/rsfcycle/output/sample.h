@@ -1,0 +1,61 @@
+#ifndef rsfcycle_output_sample_h
+#define rsfcycle_output_sample_h
+
+#include <array>
+#include <rsfcycle/solvers/step_statistics.h>
+#include <string>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    /**
+     * What is recorded of one accepted state: the slip rate and the
+     * tangential displacement (up to two components) of every contact node,
+     * the model's own time-series columns, and the solver counts of the
+     * step that produced the state. The SEAS files (output::SeasFiles) also
+     * need the friction stress and the state of every node and the rates
+     * of the observation points: a model fills them when the SEAS files
+     * are on (`Output/SEAS/Problem` given); else they may stay empty.
+     */
+    struct Sample
+    {
+      std::vector<double>                slip_rates;   // [m/s]
+      std::vector<std::array<double, 2>> slip;         // [m]
+      std::vector<double>                observations; // see Layout
+      solvers::StepStatistics            statistics;
+      /** The friction stress |sigma_n| mu(V, alpha) + C of every node [Pa]. */
+      std::vector<double> shear_stresses;
+      /** log10 of the state theta = L / V* exp(alpha) of every node [s]. */
+      std::vector<double> log10_states;
+      /** The time derivatives of the observations (body models). */
+      std::vector<double> observation_rates;
+    };
+
+    /**
+     * The fixed description of a model's records: the contact nodes'
+     * along-base coordinates (and, in 3D, their z coordinates) in the order
+     * of Sample::slip_rates, the names (with unit suffix) of the
+     * observation columns of time-series.csv, the convergence rate v0 that
+     * scales the event threshold, and how event times are found (at the
+     * accepted step, or interpolated in log V between two steps; see
+     * output::EventDetector); for the SEAS files, the nodes' lumped
+     * quadrature weights (length or area of the contact each stands for)
+     * and the names of the observation points whose displacement and rate
+     * make surface-station files (none for the spring-slider).
+     */
+    struct Layout
+    {
+      std::vector<double>      positions;
+      std::vector<double>      lateral_positions;
+      std::vector<std::string> observation_names;
+      std::vector<double>      weights;
+      std::vector<std::string> station_names;
+      double                   convergence_rate        = 1;
+      bool                     interpolate_event_times = false;
+    };
+  } // namespace output
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,49 @@
+#ifndef rsfcycle_physics_body_state_h
+#define rsfcycle_physics_body_state_h
+
+#include <boost/serialization/split_member.hpp>
+#include <boost/serialization/vector.hpp>
+#include <rsfcycle/la.h>
+#include <rsfcycle/solvers/step_statistics.h>
+#include <vector>
+
+namespace rsfcycle
+{
+  /**
+   * The state of the body at one time: displacement, velocity, acceleration
+   * (all dofs) and the friction state alpha = log(theta V* / L) per contact
+   * node, with the friction force of the step that produced it and what
+   * that step cost.
+   */
+  struct BodyState
+  {
+    la::Vector          u, v, a;
+    std::vector<double> alpha;
+    std::vector<double> shear_traction; // |friction force| / w per node [Pa]
+    solvers::StepStatistics statistics;
+
+    template <class Archive>
+    void
+    save(Archive &ar, const unsigned int) const
+    {
+      la::save(ar, u);
+      la::save(ar, v);
+      la::save(ar, a);
+      ar &alpha &shear_traction &statistics;
+    }
+
+    template <class Archive>
+    void
+    load(Archive &ar, const unsigned int)
+    {
+      la::load(ar, u);
+      la::load(ar, v);
+      la::load(ar, a);
+      ar &alpha &shear_traction &statistics;
+    }
+
+    BOOST_SERIALIZATION_SPLIT_MEMBER()
+  };
+} // namespace rsfcycle
+
+#endif

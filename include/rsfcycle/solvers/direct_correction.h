@@ -1,0 +1,50 @@
+#ifndef rsfcycle_solvers_direct_correction_h
+#define rsfcycle_solvers_direct_correction_h
+
+#include <deal.II/lac/vector.h>
+#include <memory>
+#include <rsfcycle/solvers/spatial_problem.h>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    /**
+     * Exact (sparse direct) linear correction. The Newton matrix differs
+     * from A only in the contact block, so the free non-contact unknowns I
+     * are eliminated once per step matrix: CHOLMOD factorises A_II (a sparse
+     * Cholesky factor, solvers/sparse_cholesky.h) and the
+     * dense Schur complement S = A_cc - A_cI A_II^{-1} A_Ic of all contact
+     * dofs c is formed (with Z = A_II^{-1} A_Ic). Each TNNMG iteration then
+     * costs one sparse back-substitution and one dense solve with S_aa + H_aa
+     * on the active (non-truncated) contact dofs a. The factorisations of the
+     * last few step matrices are cached by TruncatedNewtonSystem::matrix_key.
+     * Meant for 2D and small 3D meshes (S is dense).
+     */
+    class DirectCorrection : public LinearCorrection
+    {
+    public:
+      DirectCorrection();
+      ~DirectCorrection() override;
+
+      unsigned int
+      solve(const TruncatedNewtonSystem &system,
+            const la::Vector            &rhs,
+            la::Vector                  &correction) override;
+
+    private:
+      struct Factorization;
+      const Factorization &
+      factorization(const TruncatedNewtonSystem &system);
+
+      std::vector<std::unique_ptr<Factorization>> cache;
+      std::vector<global_dof_index>               interior, contact_dofs;
+      std::vector<int> interior_index; // dof -> index in interior, or -1
+      std::vector<int> contact_index;  // dof -> index in contact_dofs, or -1
+      dealii::Vector<double> b_I, y;   // work vectors of solve()
+    };
+  } // namespace solvers
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,66 @@
+#ifndef rsfcycle_time_integrators_h
+#define rsfcycle_time_integrators_h
+
+#include <memory>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/time/arkode.h>
+#include <rsfcycle/time/implicit_model.h>
+#include <rsfcycle/time/integrator.h>
+#include <rsfcycle/time/model.h>
+#include <rsfcycle/time/ode_model.h>
+#include <rsfcycle/time/step_size_control.h>
+#include <stdexcept>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    /**
+     * The integrators by name (`Time stepping/Integrator`): a new
+     * integrator is a class derived from Integrator in time/, its name here
+     * and one line in make_integrator().
+     */
+    inline std::string
+    integrator_names()
+    {
+      return "implicit|arkode";
+    }
+
+
+    /**
+     * The part of the model an integrator needs (an ImplicitModel, an
+     * OdeModel), or one line naming the entry if the model has none.
+     */
+    template <typename Interface, typename State>
+    Interface &
+    model_as(Model<State> &model, const std::string &integrator)
+    {
+      if (auto *part = dynamic_cast<Interface *>(&model))
+        return *part;
+      throw std::invalid_argument(
+        "Time stepping/Integrator = " + integrator + ": this model (" +
+        model.checkpoint_identity().scene + ") cannot be integrated that way");
+    }
+
+
+    /** The integrator of `Time stepping/Integrator` for the model. */
+    template <typename State>
+    std::unique_ptr<Integrator<State>>
+    make_integrator(const Parameters &parameters, Model<State> &model)
+    {
+      const std::string &name = parameters.time_stepping.integrator;
+      if (name == "implicit")
+        return make_step_size_control(parameters.time_stepping,
+                                      model_as<ImplicitModel<State>>(model,
+                                                                     name));
+      if (name == "arkode")
+        return std::make_unique<ArkodeIntegrator<State>>(
+          parameters, model_as<OdeModel<State>>(model, name));
+      throw std::invalid_argument("Time stepping/Integrator = " + name +
+                                  ": allowed are " + integrator_names());
+    }
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

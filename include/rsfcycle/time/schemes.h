@@ -1,0 +1,29 @@
+#ifndef rsfcycle_time_schemes_h
+#define rsfcycle_time_schemes_h
+
+#include <memory>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/time/time_scheme.h>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    /**
+     * The time schemes of the implicit step by name (`Solver/Time scheme`):
+     * a new scheme is a TimeScheme in its own header and one line in the
+     * list of source/time/schemes.cc.
+     */
+
+    /** The names of the schemes, as a Patterns::Selection. */
+    std::string
+    scheme_names();
+
+    /** The scheme named in the parameters, with its own parameters. */
+    std::unique_ptr<const TimeScheme>
+    make_scheme(const SolverParameters &solver);
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

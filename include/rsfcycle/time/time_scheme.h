@@ -1,0 +1,99 @@
+#ifndef rsfcycle_time_time_scheme_h
+#define rsfcycle_time_time_scheme_h
+
+#include <array>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    /**
+     * The time discretisation of an implicit step of M a + C v + K u = f
+     * with friction (`Solver/Time scheme`, time/schemes.h), written for the
+     * unknown w of the step: the velocity at which the friction acts, so
+     * that the step minimises the convex energy
+     * 1/2 w^T A w - r^T w + j(w) of (15) with the step matrix
+     * A = c_M M + c_C C + c_K K (MODEL.md §4.2, §8.3). The step's equation
+     * is M a* + C w + K u* = f(t + load_fraction() tau) with
+     *   u* = u_n + tau (d[0] v_n + tau d[1] a_n) + c_K w
+     *                                             (d = known_displacement),
+     *   a* = c_M w - (m[0] v_n + m[1] a_n)        (m = known_inertia);
+     * after the solve the new state is
+     *   v_{n+1} = e[0] w + e[1] v_n               (e = new_velocity),
+     *   a_{n+1} = g[0] (v_{n+1} - v_n) + g[1] a_n (g = new_acceleration),
+     *   u_{n+1} = u_n + tau (h[0] v_n + h[1] v_{n+1})
+     *             + tau^2 (h[2] a_n + h[3] a_{n+1}) (h = new_displacement).
+     * The state update (17) over the step takes the slip rate of
+     * (1 - state_weight()) v_n + state_weight() w. The step matrix is a
+     * positive combination of M, C and K, so every scheme keeps the
+     * spatial problem strictly convex and TNNMG unchanged.
+     *
+     * A new scheme is a class derived from TimeScheme in its own header and
+     * one line in time::make_scheme() (source/time/schemes.cc).
+     */
+    class TimeScheme
+    {
+    public:
+      virtual ~TimeScheme() = default;
+
+      /** The name in `Solver/Time scheme`. */
+      virtual std::string
+      name() const = 0;
+
+      /** c_M, c_C, c_K of the step matrix. */
+      virtual std::array<double, 3>
+      step_coefficients(double tau) const = 0;
+
+      /** The load and the prescribed velocities are taken at t + this tau. */
+      virtual double
+      load_fraction() const = 0;
+
+      /** d: the old state's part of u*. */
+      virtual std::array<double, 2>
+      known_displacement() const = 0;
+
+      /** m: the old state's part of the inertia, M (m[0] v_n + m[1] a_n). */
+      virtual std::array<double, 2>
+      known_inertia(double tau) const = 0;
+
+      /** The weight of w in the slip rate of the state update. */
+      virtual double
+      state_weight() const = 0;
+
+      /** e: v_{n+1} from w. */
+      virtual std::array<double, 2>
+      new_velocity() const = 0;
+
+      /** g: a_{n+1} from v_{n+1} - v_n and a_n. */
+      virtual std::array<double, 2>
+      new_acceleration(double tau) const = 0;
+
+      /** h: u_{n+1} from v_n, v_{n+1}, a_n and a_{n+1}. */
+      virtual std::array<double, 4>
+      new_displacement() const = 0;
+
+      /** The power of tau with which the local error grows. */
+      virtual double
+      local_error_order() const = 0;
+    };
+
+
+    /**
+     * The step matrix coefficients of `scheme`, without the mass matrix
+     * for a model without inertia (quasi-static, quasi-dynamic).
+     */
+    inline std::array<double, 3>
+    step_coefficients(const TimeScheme &scheme,
+                      const double      tau,
+                      const bool        inertia)
+    {
+      std::array<double, 3> c = scheme.step_coefficients(tau);
+      if (!inertia)
+        c[0] = 0;
+      return c;
+    }
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,50 @@
+#include <functional>
+#include <rsfcycle/time/schemes.h>
+#include <rsfcycle/time/theta_scheme.h>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    namespace
+    {
+      using Factory = std::function<std::unique_ptr<const TimeScheme>(
+        const SolverParameters &)>;
+
+      /** The list of schemes: one line per scheme. */
+      const std::vector<std::pair<std::string, Factory>> &
+      schemes()
+      {
+        static const std::vector<std::pair<std::string, Factory>> list = {
+          {"theta", [](const SolverParameters &solver) {
+             return std::make_unique<ThetaScheme>(solver.theta);
+           }}};
+        return list;
+      }
+    } // namespace
+
+
+    std::string
+    scheme_names()
+    {
+      std::string names;
+      for (const auto &[name, factory] : schemes())
+        names += (names.empty() ? "" : "|") + name;
+      return names;
+    }
+
+
+    std::unique_ptr<const TimeScheme>
+    make_scheme(const SolverParameters &solver)
+    {
+      for (const auto &[name, factory] : schemes())
+        if (name == solver.time_scheme)
+          return factory(solver);
+      throw std::invalid_argument("Solver/Time scheme = " + solver.time_scheme +
+                                  ": allowed are " + scheme_names());
+    }
+  } // namespace time
+} // namespace rsfcycle

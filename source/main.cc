@@ -18,6 +18,7 @@
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/version.h>
 #include <streambuf>
 #include <string>
 #include <utility>
@@ -92,19 +93,35 @@ namespace
          "                                     write one and stop)\n"
          "       rsfcycle --print-parameters   all parameters with their\n"
          "                                     documentation and defaults\n"
+         "       rsfcycle --version            version, git commit, deal.II, build\n"
          "       rsfcycle --help\n\n"
+         "Paths in FILE.prm (include, Mesh file/File) are looked up beside\n"
+         "FILE.prm first, then in the working directory.\n\n"
          "Scenes (entry `Scene`): "
       << rsfcycle::scenes::scene_names()
       << "\n"
          "  wedge: the laboratory subduction wedge of Pipping et al. (2016),\n"
          "         2D (plane strain) or 3D (`Dimension = 3`), parameters in\n"
          "         subsection `Wedge`.\n"
+         "  mesh-file: your own body from a gmsh mesh (2D, antiplane or 3D):\n"
+         "         boundary roles, materials per volume tag and friction as\n"
+         "         functions of position in subsection `Mesh file`\n"
+         "         (doc/mesh-file.md).\n"
          "  spring-slider: one block on a rate-and-state base loaded\n"
          "         through a spring (no mesh), parameters in subsection\n"
          "         `Spring slider`.\n\n"
-         "Ready-made files: prm/wedge-2d.prm (default resolution),\n"
-         "prm/wedge-2d-paper.prm (the paper's resolution),\n"
-         "prm/spring-slider.prm (stick-slip), prm/spring-slider-stable.prm.\n";
+         "Ready-made files in prm/:\n"
+         "  wedge-2d.prm          the paper's 2D laboratory wedge (the demo)\n"
+         "  wedge-2d-paper.prm    the same at the paper's resolution\n"
+         "  wedge-2d-mesh.prm     the 2D wedge from a gmsh mesh (mesh-file)\n"
+         "  wedge-3d.prm          the 3D laboratory wedge\n"
+         "  wedge-3d-paper.prm    the 3D wedge at the paper's resolution\n"
+         "  subduction-2d.prm     a kilometre-scale subduction zone (mesh-file)\n"
+         "  seas-bp1-qd.prm       SEAS BP1-QD (antiplane, quasi-dynamic)\n"
+         "  seas-bp1-fd.prm       SEAS BP1-FD (antiplane, fully dynamic)\n"
+         "  seas-bp2-qd.prm       SEAS BP2-QD (BP1-QD with D_c = 4 mm)\n"
+         "  spring-slider.prm     a spring-slider in stick-slip\n"
+         "  spring-slider-stable.prm  a stable spring-slider\n";
   }
 
   /**
@@ -273,6 +290,11 @@ main(int argc, char **argv)
               print_help();
               return 0;
             }
+          else if (argument == "--version")
+            {
+              std::cout << rsfcycle::version::describe() << std::endl;
+              return 0;
+            }
           else if (argument == "--print-parameters")
             {
               prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
@@ -300,7 +322,7 @@ main(int argc, char **argv)
         throw std::invalid_argument("parameter file " + file +
                                     " does not exist");
 
-      prm.parse_input(file);
+      rsfcycle::scenes::parse_parameter_file(prm, file);
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);
       if (force)

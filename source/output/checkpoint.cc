@@ -6,13 +6,10 @@
 #include <fstream>
 #include <rsfcycle/output/checkpoint.h>
 #include <rsfcycle/output/files.h>
+#include <rsfcycle/version.h>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
-
-#ifndef RSFCYCLE_VERSION
-#  define RSFCYCLE_VERSION "unknown"
-#endif
 
 namespace rsfcycle
 {
@@ -104,7 +101,7 @@ namespace rsfcycle
         std::string header(header_size, '\0');
         header.replace(magic_at, magic.size(), magic);
         put_number(header, format_at, checkpoint_format, 4);
-        put_text(header, program_at, RSFCYCLE_VERSION, scene_at - program_at);
+        put_text(header, program_at, version::number, scene_at - program_at);
         put_text(header, scene_at, identity.scene, dimension_at - scene_at);
         put_number(header, dimension_at, identity.dimension, 4);
         put_number(header, unknowns_at, identity.n_unknowns, 8);
@@ -147,7 +144,7 @@ namespace rsfcycle
                  (size >= scene_at ?
                     " by rsfcycle " + get_text(bytes, program_at, 16) :
                     std::string()) +
-                 ", this rsfcycle " + RSFCYCLE_VERSION + " reads format " +
+                 ", this rsfcycle " + version::number + " reads format " +
                  n(checkpoint_format) +
                  ": resume with the rsfcycle version that wrote it";
         if (size < header_size)

@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <rsfcycle/output/files.h>
+#include <rsfcycle/version.h>
 #include <sstream>
 #include <unistd.h>
 
@@ -139,6 +140,7 @@ namespace rsfcycle
         return;
       std::filesystem::create_directories(dir);
       std::ostringstream text;
+      text << "# " << version::describe() << "\n";
       prm.print_parameters(text, dealii::ParameterHandler::PRM);
       write_file(dir + "/parameters.prm", text.str());
     }

@@ -5,6 +5,7 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/output/seas_files.h>
+#include <rsfcycle/version.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -105,7 +106,8 @@ namespace rsfcycle
       std::ostringstream text;
       text << "# This is the file header:\n"
            << "# problem=" << parameters.problem << "\n"
-           << "# code=rsfcycle " << RSFCYCLE_VERSION << "\n"
+           << "# code=rsfcycle " << version::number << " (commit "
+           << version::commit << ")\n"
            << "# element_size=" << element_size << " m\n"
            << "# location=" << location << "\n";
       return text.str();

@@ -160,7 +160,10 @@ namespace rsfcycle
                           Patterns::Anything(),
                           "The gmsh mesh (.msh, format 2 or 4, ASCII; "
                           "quadrilaterals in 2D, hexahedra in 3D) of Scene = "
-                          "mesh-file, relative to the working directory");
+                          "mesh-file. A relative path is looked up beside the "
+                          "parameter file first, then in the working "
+                          "directory; the run folder's parameters.prm "
+                          "records the absolute path");
         prm.declare_entry(
           "Refine where",
           "",

@@ -1,4 +1,5 @@
 #include <rsfcycle/models/spring_slider.h>
+#include <rsfcycle/parameter_file.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/registry.h>
@@ -28,6 +29,15 @@ namespace rsfcycle
       Wedge<2>::declare_parameters(prm);
       MeshFile<2>::declare_parameters(prm);
       models::SpringSlider::declare_parameters(prm);
+    }
+
+
+    void
+    parse_parameter_file(ParameterHandler &prm, const std::string &file)
+    {
+      // The entries that name an input file, as (subsection, entry); a
+      // scene with a new file entry adds it here.
+      rsfcycle::parse_parameter_file(prm, file, {{"Mesh file", "File"}});
     }
 
 

@@ -311,7 +311,7 @@ main(int argc, char **argv)
         throw std::invalid_argument("usage: rsfcycle_test_driver FILE.prm");
       dealii::ParameterHandler prm;
       rsfcycle::scenes::declare_parameters(prm);
-      prm.parse_input(argv[1]);
+      rsfcycle::scenes::parse_parameter_file(prm, argv[1]);
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);
 

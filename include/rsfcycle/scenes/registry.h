@@ -36,6 +36,15 @@ namespace rsfcycle
     declare_parameters(ParameterHandler &prm);
 
     /**
+     * Read the parameter file `file` into prm (declared by
+     * declare_parameters()) with its includes and its input-file entries
+     * (`Mesh file/File`) resolved relative to its own folder first, then
+     * to the working directory (rsfcycle::parse_parameter_file()).
+     */
+    void
+    parse_parameter_file(ParameterHandler &prm, const std::string &file);
+
+    /**
      * The continuum scene (geometry, materials, friction) of the given name,
      * reading its subsection of prm; run by ProblemBase.
      */

@@ -15,6 +15,7 @@
 #include <rsfcycle/output/writers.h>
 #include <rsfcycle/simulator/simulator.h>
 #include <rsfcycle/time/integrators.h>
+#include <rsfcycle/version.h>
 #include <sstream>
 
 namespace rsfcycle
@@ -172,6 +173,8 @@ namespace rsfcycle
       read_checkpoint();
     for (const auto &writer : writers)
       writer->open(resume);
+    // the first line of log.txt (and of each resumed part of it)
+    log << version::describe() << std::endl;
     model.describe(log);
     if (resume)
       {

@@ -40,8 +40,8 @@ cmake --build build -j"$jobs"
 # 3. Run or test.
 if [[ $mode == run ]]; then
   # --force: the demo run replaces the folder of an earlier demo run.
-  # RANKS (default 2) MPI ranks: the default run takes about 11 minutes on
-  # 2 cores, 18 on one (RANKS=1). Open MPI refuses root unless told.
+  # RANKS (default 2) MPI ranks: the default run takes about 6 minutes on
+  # 2 cores, 9 on one (RANKS=1). Open MPI refuses root unless told.
   ranks=${RANKS:-2}
   if ((EUID == 0)); then
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

@@ -314,7 +314,11 @@ namespace rsfcycle
                       Selection(schemes),
                       "The time discretisation of the implicit step. theta: "
                       "the one-step theta scheme of Theta (0.5: the "
-                      "paper's trapezoidal Newmark scheme (15))");
+                      "paper's trapezoidal Newmark scheme (15)); "
+                      "generalized-alpha: the scheme of Chung and Hulbert "
+                      "(1993) with Spectral radius, second order with "
+                      "numerical damping of the modes much stiffer than the "
+                      "step only, for Dynamics = dynamic");
     prm.declare_entry("State law",
                       "ageing",
                       Selection(friction::law_names()),
@@ -346,6 +350,15 @@ namespace rsfcycle
       "in a km-scale model, then change sign from step to step). 1: "
       "backward Euler, first order, damps them within a step. Between: "
       "first order, damping in between [-]");
+    prm.declare_entry(
+      "Spectral radius",
+      "0.8",
+      Double(0, 1),
+      "rho_inf of Time scheme = generalized-alpha: the amplification per "
+      "step of a mode much stiffer than the step (high-frequency "
+      "dissipation). 1: the trapezoidal rule, no dissipation; 0: such modes "
+      "vanish in one step; the modes that the step resolves are damped at "
+      "third order only [-]");
     prm.declare_entry("Fixed-point tolerance",
                       "1e-5",
                       Double(1e-300, 1),
@@ -417,6 +430,7 @@ namespace rsfcycle
     coupling              = Choice<Coupling>::parse(prm.get("Coupling"));
     dynamics              = Choice<Dynamics>::parse(prm.get("Dynamics"));
     theta                 = prm.get_double("Theta");
+    spectral_radius       = prm.get_double("Spectral radius");
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");

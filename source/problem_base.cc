@@ -29,7 +29,9 @@ namespace rsfcycle
                      {parameters.run.antiplane,
                       parameters.solver.dynamics ==
                         SolverParameters::Dynamics::quasi_dynamic})
-    , scheme(time::make_scheme(parameters.solver))
+    , scheme(time::make_scheme(parameters.solver,
+                               parameters.solver.dynamics ==
+                                 SolverParameters::Dynamics::dynamic))
   {}
 
 

@@ -157,8 +157,10 @@ namespace rsfcycle
     Coupling                             coupling = Coupling::fixed_point;
     Dynamics                             dynamics = Dynamics::dynamic;
     /** The time scheme's name; time/schemes.h makes it. */
-    std::string      time_scheme                = "theta";
-    double           theta                      = 0.5;
+    std::string time_scheme = "theta";
+    double      theta       = 0.5;
+    /** rho_inf of the generalized-alpha scheme. */
+    double           spectral_radius            = 0.8;
     double           fixed_point_tolerance      = 1e-5;
     unsigned int     max_fixed_point_iterations = 20;
     LinearCorrection linear_correction          = LinearCorrection::multigrid;

@@ -116,7 +116,7 @@ namespace rsfcycle
                                ParameterHandler &prm)
       : parameters(parameters)
       , law(*parameters.solver.law)
-      , scheme(time::make_scheme(parameters.solver))
+      , scheme(time::make_scheme(parameters.solver, mass > 0))
     {
       prm.enter_subsection("Spring slider");
       mass             = prm.get_double("Mass");

@@ -1,4 +1,5 @@
 #include <functional>
+#include <rsfcycle/time/generalized_alpha_scheme.h>
 #include <rsfcycle/time/schemes.h>
 #include <rsfcycle/time/theta_scheme.h>
 #include <stdexcept>
@@ -11,16 +12,27 @@ namespace rsfcycle
   {
     namespace
     {
-      using Factory = std::function<std::unique_ptr<const TimeScheme>(
-        const SolverParameters &)>;
+      using Factory = std::function<std::unique_ptr<
+        const TimeScheme>(const SolverParameters &, bool inertia)>;
 
       /** The list of schemes: one line per scheme. */
       const std::vector<std::pair<std::string, Factory>> &
       schemes()
       {
         static const std::vector<std::pair<std::string, Factory>> list = {
-          {"theta", [](const SolverParameters &solver) {
+          {"theta",
+           [](const SolverParameters &solver, bool) {
              return std::make_unique<ThetaScheme>(solver.theta);
+           }},
+          {"generalized-alpha",
+           [](const SolverParameters &solver, const bool inertia) {
+             if (!inertia)
+               throw std::invalid_argument(
+                 "Solver/Time scheme = generalized-alpha needs inertia "
+                 "(Solver/Dynamics = dynamic; the spring-slider: Mass > 0); "
+                 "without it choose theta (Theta = 1 damps stiff modes)");
+             return std::make_unique<GeneralizedAlphaScheme>(
+               solver.spectral_radius);
            }}};
         return list;
       }
@@ -38,11 +50,11 @@ namespace rsfcycle
 
 
     std::unique_ptr<const TimeScheme>
-    make_scheme(const SolverParameters &solver)
+    make_scheme(const SolverParameters &solver, const bool inertia)
     {
       for (const auto &[name, factory] : schemes())
         if (name == solver.time_scheme)
-          return factory(solver);
+          return factory(solver, inertia);
       throw std::invalid_argument("Solver/Time scheme = " + solver.time_scheme +
                                   ": allowed are " + scheme_names());
     }

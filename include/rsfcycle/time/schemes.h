@@ -20,9 +20,13 @@ namespace rsfcycle
     std::string
     scheme_names();
 
-    /** The scheme named in the parameters, with its own parameters. */
+    /**
+     * The scheme named in the parameters, with its own parameters, for a
+     * model with or without inertia (a scheme that needs it refuses a model
+     * without in one line).
+     */
     std::unique_ptr<const TimeScheme>
-    make_scheme(const SolverParameters &solver);
+    make_scheme(const SolverParameters &solver, bool inertia);
   } // namespace time
 } // namespace rsfcycle
 

@@ -525,8 +525,8 @@ namespace rsfcycle
     const auto &solver = parameters.solver;
     log << "Solver: " << name_of(solver.coupling) << " coupling, "
         << name_of(solver.linear_correction) << " linear correction, "
-        << solver.law->name() << " law, " << name_of(solver.dynamics)
-        << std::endl;
+        << solver.law->name() << " law, " << name_of(solver.dynamics) << ", "
+        << scheme->describe() << std::endl;
     if (const auto *mg =
           dynamic_cast<const solvers::MultigridCorrection<dim> *>(
             linear_correction.get()))

@@ -231,7 +231,8 @@ namespace rsfcycle
         w,
         alpha,
         [&](const double a, double &x) {
-          phi.set_state(a);
+          const double sigma = scheme->friction_state_weight();
+          phi.set_state((1 - sigma) * old.alpha + sigma * a);
           const std::array<double, 1> guess = {{x}};
           x =
             friction::solve_local_problem<1>({{A}}, {{rhs}}, phi, &guess).x[0];
@@ -325,7 +326,7 @@ namespace rsfcycle
           << "Stiffness k / k_crit = " << stiffness / critical_stiffness()
           << " (k_crit = (b - a) |sigma_n| / L = " << critical_stiffness()
           << " Pa/m)\n"
-          << "Solver: " << scheme->name() << " scheme, "
+          << "Solver: " << scheme->describe() << ", "
           << name_of(parameters.solver.coupling) << " coupling, " << law.name()
           << " law; as an ODE in "
           << (mass > 0 ? "(slip, V, alpha)" : "(slip, log V, alpha)")

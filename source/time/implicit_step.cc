@@ -138,8 +138,11 @@ namespace rsfcycle
       const auto solve_velocity = [&](const std::vector<double> &alpha_k,
                                       la::Vector                &v) {
         ++k;
+        const double sigma = scheme.friction_state_weight();
         for (unsigned int i = 0; i < n_nodes; ++i)
-          potentials[i].set_state(alpha_k[i]);
+          potentials[i].set_state(sigma == 1 ? alpha_k[i] :
+                                               (1 - sigma) * old.alpha[i] +
+                                                 sigma * alpha_k[i]);
         // Inexact fixed point: the early iterations, whose state is still
         // far from converged, get a looser TNNMG tolerance (d is the state
         // distance of the previous iteration; d_0 = 1). The errors of loose

@@ -1,6 +1,7 @@
 #ifndef rsfcycle_time_theta_scheme_h
 #define rsfcycle_time_theta_scheme_h
 
+#include <rsfcycle/format.h>
 #include <rsfcycle/time/time_scheme.h>
 
 namespace rsfcycle
@@ -36,6 +37,12 @@ namespace rsfcycle
       name() const override
       {
         return "theta";
+      }
+
+      std::string
+      describe() const override
+      {
+        return "theta scheme (Theta " + format_number(theta) + ")";
       }
 
       std::array<double, 3>

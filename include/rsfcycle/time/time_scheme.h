@@ -25,7 +25,9 @@ namespace rsfcycle
      *   u_{n+1} = u_n + tau (h[0] v_n + h[1] v_{n+1})
      *             + tau^2 (h[2] a_n + h[3] a_{n+1}) (h = new_displacement).
      * The state update (17) over the step takes the slip rate of
-     * (1 - state_weight()) v_n + state_weight() w. The step matrix is a
+     * (1 - state_weight()) v_n + state_weight() w, the friction the state
+     * (1 - friction_state_weight()) alpha_n + friction_state_weight()
+     * alpha_{n+1}. The step matrix is a
      * positive combination of M, C and K, so every scheme keeps the
      * spatial problem strictly convex and TNNMG unchanged.
      *
@@ -40,6 +42,10 @@ namespace rsfcycle
       /** The name in `Solver/Time scheme`. */
       virtual std::string
       name() const = 0;
+
+      /** The name with the scheme's parameters, for the log. */
+      virtual std::string
+      describe() const = 0;
 
       /** c_M, c_C, c_K of the step matrix. */
       virtual std::array<double, 3>
@@ -60,6 +66,17 @@ namespace rsfcycle
       /** The weight of w in the slip rate of the state update. */
       virtual double
       state_weight() const = 0;
+
+      /**
+       * The friction of the step acts at the state (1 - sigma) alpha_n +
+       * sigma alpha_{n+1}, sigma this weight: at the time at which w is the
+       * velocity (1 for a scheme whose w is v_{n+1}).
+       */
+      virtual double
+      friction_state_weight() const
+      {
+        return 1;
+      }
 
       /** e: v_{n+1} from w. */
       virtual std::array<double, 2>

@@ -32,6 +32,9 @@ namespace rsfcycle
     Choice<SolverParameters::LinearCorrection>::names = {"multigrid",
                                                          "direct",
                                                          "amg"};
+  template <>
+  const std::vector<std::string> Choice<SolverParameters::Bulk>::names =
+    {"volume", "green-function"};
 
 
   template <typename Enum>
@@ -70,6 +73,7 @@ namespace rsfcycle
   template struct Choice<SolverParameters::Coupling>;
   template struct Choice<SolverParameters::Dynamics>;
   template struct Choice<SolverParameters::LinearCorrection>;
+  template struct Choice<SolverParameters::Bulk>;
 
 
   void
@@ -208,7 +212,11 @@ namespace rsfcycle
       "Solver/Coupling), its step sizes chosen by Controller; arkode: "
       "SUNDIALS ARKODE (implicit, adaptive, relative tolerance = "
       "Tolerance) on the model's ODE, for models that are one (the "
-      "spring-slider, with Cohesion = 0); it writes no checkpoints");
+      "spring-slider, with Cohesion = 0); it writes no checkpoints; "
+      "runge-kutta: ARKODE's explicit Dormand-Prince 5(4) on the model's "
+      "ODE (relative tolerance = Tolerance, steps between Minimum step and "
+      "Maximum step, starting at Initial step), every accepted step a step "
+      "of the run: the fault's ODE of Solver/Bulk = green-function");
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),
@@ -335,6 +343,14 @@ namespace rsfcycle
                       "friction on every contact node (eta of the scene, by "
                       "default sqrt(G rho) of the material at the node)");
     prm.declare_entry(
+      "Bulk",
+      "volume",
+      Selection(Choice<Bulk>::pattern()),
+      "volume: the implicit step over the mesh (TNNMG); green-function: "
+      "the fault's Green's functions from the mesh (MODEL.md 8.1) and the "
+      "fault's ODE by Time stepping/Integrator = runge-kutta: quasi-dynamic, "
+      "elastic, prescribed normal stress, constant load, one MPI rank");
+    prm.declare_entry(
       "Theta",
       "0.5",
       Double(0.5, 1),
@@ -416,6 +432,7 @@ namespace rsfcycle
     time_scheme           = prm.get("Time scheme");
     coupling              = Choice<Coupling>::parse(prm.get("Coupling"));
     dynamics              = Choice<Dynamics>::parse(prm.get("Dynamics"));
+    bulk                  = Choice<Bulk>::parse(prm.get("Bulk"));
     theta                 = prm.get_double("Theta");
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
@@ -564,5 +581,20 @@ namespace rsfcycle
                                   ": must not exceed Output interval = " +
                                   format_number(output.output_interval));
     output.seas.validate(run.dimension);
+    const bool green = solver.bulk == SolverParameters::Bulk::green_function;
+    const std::string bulk = "Solver/Bulk = green-function: needs ";
+    if (green && solver.dynamics != SolverParameters::Dynamics::quasi_dynamic)
+      throw std::invalid_argument(
+        bulk + "Solver/Dynamics = quasi-dynamic (this run has " +
+        name_of(solver.dynamics) +
+        ": inertia or no radiation damping is no Green's function ODE)");
+    if (green && run.dimension != 2)
+      throw std::invalid_argument(bulk + "Dimension = 2 (3D is not done)");
+    if (green != (ts.integrator == "runge-kutta") &&
+        run.scene != "spring-slider")
+      throw std::invalid_argument(
+        green ? bulk + "Time stepping/Integrator = runge-kutta" :
+                "Time stepping/Integrator = runge-kutta: needs Solver/Bulk = "
+                "green-function for a continuum scene");
   }
 } // namespace rsfcycle

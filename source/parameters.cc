@@ -32,6 +32,9 @@ namespace rsfcycle
     Choice<SolverParameters::LinearCorrection>::names = {"multigrid",
                                                          "direct",
                                                          "amg"};
+  template <>
+  const std::vector<std::string> Choice<SolverParameters::Bulk>::names =
+    {"volume", "green-function"};
 
 
   template <typename Enum>
@@ -70,6 +73,7 @@ namespace rsfcycle
   template struct Choice<SolverParameters::Coupling>;
   template struct Choice<SolverParameters::Dynamics>;
   template struct Choice<SolverParameters::LinearCorrection>;
+  template struct Choice<SolverParameters::Bulk>;
 
 
   void
@@ -208,7 +212,11 @@ namespace rsfcycle
       "Solver/Coupling), its step sizes chosen by Controller; arkode: "
       "SUNDIALS ARKODE (implicit, adaptive, relative tolerance = "
       "Tolerance) on the model's ODE, for models that are one (the "
-      "spring-slider, with Cohesion = 0); it writes no checkpoints");
+      "spring-slider, with Cohesion = 0); it writes no checkpoints; "
+      "runge-kutta: ARKODE's explicit Dormand-Prince 5(4) on the model's "
+      "ODE (relative tolerance = Tolerance, steps between Minimum step and "
+      "Maximum step, starting at Initial step), every accepted step a step "
+      "of the run: the fault's ODE of Solver/Bulk = green-function");
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),
@@ -339,6 +347,14 @@ namespace rsfcycle
                       "friction on every contact node (eta of the scene, by "
                       "default sqrt(G rho) of the material at the node)");
     prm.declare_entry(
+      "Bulk",
+      "volume",
+      Selection(Choice<Bulk>::pattern()),
+      "volume: the implicit step over the mesh (TNNMG); green-function: "
+      "the fault's Green's functions from the mesh (MODEL.md 8.1) and the "
+      "fault's ODE by Time stepping/Integrator = runge-kutta: quasi-dynamic, "
+      "elastic, prescribed normal stress, constant load, one MPI rank");
+    prm.declare_entry(
       "Theta",
       "0.5",
       Double(0.5, 1),
@@ -429,6 +445,7 @@ namespace rsfcycle
     time_scheme           = prm.get("Time scheme");
     coupling              = Choice<Coupling>::parse(prm.get("Coupling"));
     dynamics              = Choice<Dynamics>::parse(prm.get("Dynamics"));
+    bulk                  = Choice<Bulk>::parse(prm.get("Bulk"));
     theta                 = prm.get_double("Theta");
     spectral_radius       = prm.get_double("Spectral radius");
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
@@ -549,34 +566,4 @@ namespace rsfcycle
     validate();
   }
 
-
-  void
-  Parameters::validate() const
-  {
-    if (run.antiplane && (run.dimension != 2 || run.scene != "mesh-file"))
-      throw std::invalid_argument(
-        "Displacement = antiplane: needs Dimension = 2 and Scene = "
-        "mesh-file (this run has Dimension = " +
-        std::to_string(run.dimension) + ", Scene = " + run.scene + ")");
-    const auto &ts = time_stepping;
-    if (!(ts.minimum_step <= ts.initial_step))
-      throw std::invalid_argument(
-        "Time stepping/Minimum step = " + format_number(ts.minimum_step) +
-        ": must not exceed Initial step = " + format_number(ts.initial_step));
-    if (!(ts.initial_step <= ts.maximum_step))
-      throw std::invalid_argument(
-        "Time stepping/Initial step = " + format_number(ts.initial_step) +
-        ": must not exceed Maximum step = " + format_number(ts.maximum_step));
-    if (mesh.global_refinements + mesh.local_refinements > 16)
-      throw std::invalid_argument(
-        "Mesh/Global refinements + Local refinements = " +
-        std::to_string(mesh.global_refinements + mesh.local_refinements) +
-        ": at most 16 levels are allowed");
-    if (!(output.event_output_interval <= output.output_interval))
-      throw std::invalid_argument("Output/Event output interval = " +
-                                  format_number(output.event_output_interval) +
-                                  ": must not exceed Output interval = " +
-                                  format_number(output.output_interval));
-    output.seas.validate(run.dimension);
-  }
 } // namespace rsfcycle

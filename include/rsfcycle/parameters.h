@@ -151,11 +151,21 @@ namespace rsfcycle
       direct,
       amg
     };
+    /**
+     * How the bulk enters a run: the volume mesh at every step, or its
+     * Green's functions on the fault (MODEL.md §8.1).
+     */
+    enum class Bulk
+    {
+      volume,
+      green_function
+    };
 
     /** The friction law of `State law` (friction/laws.h). */
     std::shared_ptr<const friction::Law> law = friction::make_law("ageing");
     Coupling                             coupling = Coupling::fixed_point;
     Dynamics                             dynamics = Dynamics::dynamic;
+    Bulk                                 bulk     = Bulk::volume;
     /** The time scheme's name; time/schemes.h makes it. */
     std::string time_scheme = "theta";
     double      theta       = 0.5;

@@ -1,3 +1,4 @@
+#include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/parameter_file.h>
 #include <rsfcycle/problem_base.h>
@@ -56,7 +57,10 @@ namespace rsfcycle
 
     namespace
     {
-      /** A continuum scene solved by ProblemBase<dim>. */
+      /**
+       * A continuum scene solved by ProblemBase<dim>, or with `Solver/Bulk =
+       * green-function` by models::GreenFault<dim>.
+       */
       template <int dim>
       class ContinuumSimulation : public Simulation
       {
@@ -64,18 +68,34 @@ namespace rsfcycle
         ContinuumSimulation(const Parameters &parameters, ParameterHandler &prm)
           : parameters(parameters)
           , scene(make_scene<dim>(parameters.run.scene, prm))
-        {}
+        {
+          if (green_function())
+            models::GreenFault<dim>::check(parameters, *scene);
+        }
 
         bool
         run(const ParameterHandler &prm,
             std::ostream           &log,
             const bool              resume) override
         {
+          if (green_function())
+            {
+              models::GreenFault<dim> fault(parameters, *scene, log);
+              return fault.run(prm, resume);
+            }
           ProblemBase<dim> problem(parameters, *scene, log);
           return problem.run(prm, resume);
         }
 
       private:
+        /** `Solver/Bulk = green-function`: models::GreenFault. */
+        bool
+        green_function() const
+        {
+          return parameters.solver.bulk ==
+                 SolverParameters::Bulk::green_function;
+        }
+
         const Parameters           &parameters;
         std::unique_ptr<Scene<dim>> scene;
       };

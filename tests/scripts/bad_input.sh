@@ -100,6 +100,25 @@ check_mesh mesh-antiplane-load "Load velocity" $simplex "$one_material\nend\nset
 check_mesh mesh-seas-station "Output/SEAS/Fault stations: 100 m lies outside the contact" $simplex "$one_material\nend\nsubsection Output\nsubsection SEAS\nset Problem = BP1\nset Shear modulus = 1e10\nset Fault stations = 0, 100\nset Slip profile = 0, 0.1, 0.05\nend\nend\nsubsection Mesh file"
 check_mesh mesh-radiation-damping "Friction/Radiation damping" $simplex "$one_material\nsubsection Friction\nset Radiation damping = -1\nend"
 
+# Solver/Bulk = green-function: what the fault's Green's functions cannot
+# represent (inertia, no radiation damping, gravity's normal stress that
+# changes with slip, Kelvin-Voigt viscosity, a load ramp), the integrator it
+# needs, and runge-kutta without it. On SEAS BP1-QD (mesh-file, antiplane)
+# and the wedge (normal stress from gravity).
+check_bp1() { # name, expected word, prm body (appended after the include)
+  local name=$1 word=$2 body=$3
+  printf 'include %s/prm/seas-bp1-qd.prm\nset Output directory = run-%s\nsubsection Mesh file\nset File = %s/prm/meshes/seas-bp1.msh\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend\nsubsection Solver\nset Bulk = green-function\nend\n%b\n' \
+    "$src" "$name" "$src" "$body" > "$name.prm"
+  check_file "$name" "$word"
+}
+check_bp1 green-inertia "Dynamics = quasi-dynamic" 'subsection Solver\nset Dynamics = dynamic\nend'
+check_bp1 green-quasi-static "Dynamics = quasi-dynamic" 'subsection Solver\nset Dynamics = quasi-static\nend'
+check_bp1 green-integrator "Integrator = runge-kutta" 'subsection Time stepping\nset Integrator = implicit\nend'
+check_bp1 green-viscosity "shear viscosity" 'subsection Mesh file\nset Materials = 10: density 1335, bulk modulus 26.69843e9, Poisson ratio 0.25, shear viscosity 1e12, bulk viscosity 0\nend'
+check_bp1 green-ramp "Ramp time" 'subsection Mesh file\nset Ramp time = 3e7\nend'
+check green-gravity "Normal stress" 'subsection Solver\nset Dynamics = quasi-dynamic\nset Bulk = green-function\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend'
+check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset Integrator = runge-kutta\nend'
+
 # missing parameter file
 "$exe" no-such-file.prm > /dev/null 2> missing.err
 if [ $? -ne 0 ] && [ "$(wc -l < missing.err)" -eq 1 ] && grep -q "no-such-file.prm" missing.err

@@ -8,6 +8,7 @@
 #include <rsfcycle/time/integrator.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/ode_model.h>
+#include <rsfcycle/time/runge_kutta.h>
 #include <rsfcycle/time/step_size_control.h>
 #include <stdexcept>
 #include <string>
@@ -24,7 +25,7 @@ namespace rsfcycle
     inline std::string
     integrator_names()
     {
-      return "implicit|arkode";
+      return "implicit|arkode|runge-kutta";
     }
 
 
@@ -57,6 +58,9 @@ namespace rsfcycle
       if (name == "arkode")
         return std::make_unique<ArkodeIntegrator<State>>(
           parameters, model_as<OdeModel<State>>(model, name));
+      if (name == "runge-kutta")
+        return std::make_unique<RungeKuttaIntegrator<State>>(
+          parameters.time_stepping, model_as<OdeModel<State>>(model, name));
       throw std::invalid_argument("Time stepping/Integrator = " + name +
                                   ": allowed are " + integrator_names());
     }

@@ -1,0 +1,161 @@
+#ifndef rsfcycle_models_green_fault_h
+#define rsfcycle_models_green_fault_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <ostream>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/physics/contact_quadrature.h>
+#include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/physics/green_operator.h>
+#include <rsfcycle/physics/scene.h>
+#include <rsfcycle/time/model.h>
+#include <rsfcycle/time/ode_model.h>
+#include <string>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace models
+  {
+    using namespace dealii;
+
+    /** The fault's state: slip, state and slip rate of every contact node. */
+    struct FaultState
+    {
+      std::vector<double> slip;  // s [m]
+      std::vector<double> alpha; // log(theta V* / L) [-]
+      std::vector<double> rate;  // V = ds/dt [m/s], from the force balance
+      double              t = 0; // [s]
+
+      template <class Archive>
+      void
+      serialize(Archive &ar, const unsigned int)
+      {
+        ar &slip &alpha &rate &t;
+      }
+    };
+
+    /**
+     * `Solver/Bulk = green-function` (MODEL.md §8.1): the quasi-dynamic
+     * continuum with a linear elastic bulk reduced to its fault. The mesh,
+     * the matrices and the contact quadrature are the volume path's
+     * (physics::Discretisation, physics::ContactQuadrature); the bulk's
+     * response is computed once (physics::GreenOperator: F = g0 + t g1 -
+     * S s, the observation points o0 + t o1 + O s), and the run is the ODE
+     * in (s, alpha) of every contact node k:
+     *   F_k(s, t) - c_k V_k = N_k mu(|V_k|, alpha_k) sign V_k,
+     *   ds_k/dt = V_k,  d alpha_k/dt = the state law's rate,
+     * with c_k = eta_k w_k the radiation damping and N_k = w_k |sigma_n|
+     * the normal force of the node (the same lumped weights as the volume
+     * path). Every right-hand side applies S (a dense matrix-vector
+     * product) and solves the balance for V_k node by node (a safeguarded
+     * Newton in log |V|, the friction::Law of `Solver/State law`). The
+     * simulator integrates it with `Time stepping/Integrator =
+     * runge-kutta` and writes the same files as the volume path (no VTU).
+     */
+    template <int dim>
+    class GreenFault : public time::Model<FaultState>,
+                       public time::OdeModel<FaultState>
+    {
+    public:
+      using State = FaultState;
+
+      /**
+       * What the method cannot represent in this scene, refused in one
+       * line naming the entry before anything is written: a normal stress
+       * from gravity (it changes with slip), viscous materials, a load
+       * that is not constant in time, cohesion.
+       */
+      static void
+      check(const Parameters &parameters, const physics::Scene<dim> &scene);
+
+      GreenFault(const Parameters          &parameters,
+                 const physics::Scene<dim> &scene,
+                 std::ostream              &log);
+
+      /** Mesh, matrices, contact, the operator, the initial state. */
+      void
+      setup();
+
+      /** setup() and the run (or its resume); false if interrupted. */
+      bool
+      run(const ParameterHandler &prm, bool resume = false);
+
+      const physics::GreenOperator &
+      green_operator() const
+      {
+        return op;
+      }
+
+      const physics::ContactQuadrature<dim> &
+      contact_quadrature() const
+      {
+        return contact;
+      }
+
+      /** The slip rate of node k at the force F and state alpha. */
+      double
+      slip_rate(unsigned int k, double force, double alpha) const;
+
+      /** @name The time::Model interface */
+      /** @{ */
+      State
+      initial_state() const override
+      {
+        return initial;
+      }
+      output::Layout
+      layout() const override;
+      output::Sample
+      sample(const State &state) const override;
+      output::CheckpointIdentity
+      checkpoint_identity() const override;
+      void
+      describe(std::ostream &log) const override;
+      /** @} */
+
+      /** @name The time::OdeModel interface */
+      /** @{ */
+      Vector
+      to_ode(const State &state) const override;
+      State
+      from_ode(const Vector &y, double t) const override;
+      int
+      ode_rhs(double t, const Vector &y, Vector &dy) const override;
+      /** rtol L_k for the slip, rtol for alpha. */
+      Vector
+      ode_absolute_tolerances(double relative) const override;
+      /** Not used by runge-kutta (every step is a sample). */
+      double
+      sample_interval(const State &) const override
+      {
+        return parameters.time_stepping.maximum_step;
+      }
+      /** @} */
+
+    private:
+      /** The slip rates of all nodes at the slip s and time t. */
+      void
+      slip_rates(const double *s,
+                 const double *alpha,
+                 double        t,
+                 double       *V) const;
+
+      const Parameters               &parameters;
+      const physics::Scene<dim>      &scene;
+      std::ostream                   &log;
+      mutable TimerOutput             timer;
+      physics::Discretisation<dim>    discretisation;
+      physics::ContactQuadrature<dim> contact;
+      physics::GreenOperator          op;
+      double                          setup_seconds = 0;
+      /** Per node: radiation damping eta w [N s/m^dim]. */
+      std::vector<double> damping;
+      State               initial;
+      mutable Vector      slip_work, force_work;
+    };
+  } // namespace models
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,231 @@
+#ifndef rsfcycle_time_runge_kutta_h
+#define rsfcycle_time_runge_kutta_h
+
+#include <algorithm>
+#include <arkode/arkode_arkstep.h>
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <nvector/nvector_serial.h>
+#include <rsfcycle/format.h>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/time/integrator.h>
+#include <rsfcycle/time/ode_model.h>
+#include <stdexcept>
+#include <string>
+#include <sundials/sundials_context.h>
+
+namespace rsfcycle
+{
+  namespace time
+  {
+    /**
+     * The integrator of `Time stepping/Integrator = runge-kutta`: the
+     * model's ODE (time::OdeModel) integrated by SUNDIALS ARKODE's
+     * explicit embedded Dormand-Prince 5(4) pair (ARKStep, ERK table
+     * ARKODE_DORMAND_PRINCE_7_4_5), adaptive with the relative tolerance
+     * `Time stepping/Tolerance` and the model's absolute tolerances, steps
+     * between `Minimum step` and `Maximum step`, the first one `Initial
+     * step`. ARKODE is called in its one-step mode, so every accepted
+     * Runge-Kutta step is an accepted step of the run (its records, events
+     * and checkpoints), without the interpolated samples of
+     * ArkodeIntegrator (deal.II's wrapper stops ARKODE at every sample,
+     * which costs a step per sample). A checkpoint keeps the state and the
+     * step size; a resumed run restarts ARKODE there (its error history is
+     * lost, so the resumed steps agree with the uninterrupted run's to the
+     * tolerance, not bitwise).
+     */
+    template <typename State>
+    class RungeKuttaIntegrator : public Integrator<State>
+    {
+    public:
+      using Vector = dealii::Vector<double>;
+
+      RungeKuttaIntegrator(const TimeSteppingParameters &parameters,
+                           const OdeModel<State>        &model)
+        : parameters(parameters)
+        , model(model)
+        , next_step(parameters.initial_step)
+      {
+        if (const std::string why = model.ode_refusal(); !why.empty())
+          throw std::invalid_argument(why);
+        if (SUNContext_Create(nullptr, &context) != 0)
+          throw std::runtime_error("SUNDIALS: no context");
+      }
+
+      ~RungeKuttaIntegrator() override
+      {
+        if (arkode != nullptr)
+          ARKStepFree(&arkode);
+        if (y != nullptr)
+          N_VDestroy(y);
+        if (tolerances != nullptr)
+          N_VDestroy(tolerances);
+        SUNContext_Free(&context);
+      }
+
+      RungeKuttaIntegrator(const RungeKuttaIntegrator &) = delete;
+      RungeKuttaIntegrator &
+      operator=(const RungeKuttaIntegrator &) = delete;
+
+      /** One accepted Runge-Kutta step, never beyond end_time. */
+      void
+      advance(State &current, double &t, const double end_time) override
+      {
+        if (arkode == nullptr)
+          start(current, t);
+        ARKStepSetStopTime(arkode, end_time);
+        long int stages_before = 0, steps_before = 0;
+        ARKStepGetNumSteps(arkode, &steps_before);
+        long int dummy = 0;
+        ARKStepGetNumRhsEvals(arkode, &stages_before, &dummy);
+        double    t_reached = t;
+        const int flag =
+          ARKStepEvolve(arkode, end_time, y, &t_reached, ARK_ONE_STEP);
+        if (failure)
+          {
+            const std::exception_ptr e = failure;
+            failure                    = nullptr;
+            std::rethrow_exception(e);
+          }
+        if (flag < 0)
+          {
+            char *const       name_c = ARKStepGetReturnFlagName(flag);
+            const std::string name(name_c);
+            std::free(name_c);
+            throw StepSizeUnderflow(
+              "ARKODE's explicit Runge-Kutta found no step at t = " +
+              format_number(t) + " s (" + name +
+              "): the ODE is too stiff for an explicit method here; "
+              "Solver/Bulk = volume (the implicit step) is the way out");
+          }
+        long int stages = 0;
+        ARKStepGetNumRhsEvals(arkode, &stages, &dummy);
+        rhs_evaluations = stages - stages_before;
+        ARKStepGetCurrentStep(arkode, &next_step);
+        last_step = t_reached - t;
+        t         = t_reached;
+        current   = model.from_ode(values(), t);
+      }
+
+      double
+      last_step_size() const override
+      {
+        return last_step;
+      }
+
+      double
+      step_size() const override
+      {
+        return next_step;
+      }
+
+      /** The right-hand side evaluations (stages) of the last step. */
+      unsigned int
+      n_spatial_problems() const override
+      {
+        return rhs_evaluations;
+      }
+
+      IntegratorMemory<State>
+      memory() const override
+      {
+        IntegratorMemory<State> memory;
+        memory.controller = "runge-kutta";
+        memory.step_size  = next_step;
+        return memory;
+      }
+
+      /** The step size; ARKODE restarts from the resumed state. */
+      void
+      restore(const IntegratorMemory<State> &memory) override
+      {
+        if (memory.step_size > 0)
+          next_step = memory.step_size;
+        if (arkode != nullptr)
+          ARKStepFree(&arkode);
+        arkode = nullptr;
+      }
+
+    private:
+      /** ARKStep with the Dormand-Prince table from the state at t. */
+      void
+      start(const State &current, const double t)
+      {
+        const Vector y0 = model.to_ode(current);
+        const Vector a  = model.ode_absolute_tolerances(parameters.tolerance);
+        if (y != nullptr)
+          N_VDestroy(y);
+        if (tolerances != nullptr)
+          N_VDestroy(tolerances);
+        y          = N_VNew_Serial(y0.size(), context);
+        tolerances = N_VNew_Serial(y0.size(), context);
+        std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(y));
+        std::copy(a.begin(), a.end(), N_VGetArrayPointer(tolerances));
+        work.reinit(y0.size());
+        work_rate.reinit(y0.size());
+
+        arkode =
+          ARKStepCreate(&RungeKuttaIntegrator::rhs, nullptr, t, y, context);
+        if (arkode == nullptr)
+          throw std::runtime_error("ARKODE: ARKStepCreate failed");
+        ARKStepSetUserData(arkode, this);
+        ARKStepSetErrFile(arkode, nullptr);
+        ARKStepSVtolerances(arkode, parameters.tolerance, tolerances);
+        ARKStepSetTableNum(arkode,
+                           ARKODE_DIRK_NONE,
+                           ARKODE_DORMAND_PRINCE_7_4_5);
+        ARKStepSetInitStep(arkode, next_step);
+        ARKStepSetMinStep(arkode, parameters.minimum_step);
+        ARKStepSetMaxStep(arkode, parameters.maximum_step);
+        ARKStepSetMaxErrTestFails(arkode, 20);
+      }
+
+      /** The current unknowns as a deal.II vector. */
+      const Vector &
+      values()
+      {
+        const double *data = N_VGetArrayPointer(y);
+        std::copy(data, data + work.size(), work.begin());
+        return work;
+      }
+
+      /** ARKODE's right-hand side: the model's, through deal.II vectors. */
+      static int
+      rhs(const realtype t, N_Vector yy, N_Vector ydot, void *user_data)
+      {
+        auto         &self = *static_cast<RungeKuttaIntegrator *>(user_data);
+        const double *in   = N_VGetArrayPointer(yy);
+        std::copy(in, in + self.work.size(), self.work.begin());
+        int status = 1;
+        try
+          {
+            status = self.model.ode_rhs(t, self.work, self.work_rate);
+          }
+        catch (...)
+          {
+            self.failure = std::current_exception();
+            return -1;
+          }
+        std::copy(self.work_rate.begin(),
+                  self.work_rate.end(),
+                  N_VGetArrayPointer(ydot));
+        return status;
+      }
+
+      const TimeSteppingParameters &parameters;
+      const OdeModel<State>        &model;
+      SUNContext                    context    = nullptr;
+      void                         *arkode     = nullptr;
+      N_Vector                      y          = nullptr;
+      N_Vector                      tolerances = nullptr;
+      Vector                        work, work_rate;
+      std::exception_ptr            failure;
+      double                        next_step       = 0;
+      double                        last_step       = 0;
+      unsigned int                  rhs_evaluations = 0;
+    };
+  } // namespace time
+} // namespace rsfcycle
+
+#endif

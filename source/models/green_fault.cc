@@ -1,0 +1,416 @@
+// The quasi-dynamic fault with the bulk's Green's functions
+// (models/green_fault.h, MODEL.md §8.1).
+#include <chrono>
+#include <cmath>
+#include <deal.II/grid/tria.h>
+#include <limits>
+#include <rsfcycle/format.h>
+#include <rsfcycle/ids.h>
+#include <rsfcycle/models/green_fault.h>
+#include <rsfcycle/output/files.h>
+#include <rsfcycle/simulator/simulator.templates.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  namespace models
+  {
+    namespace
+    {
+      const std::string refused = "Solver/Bulk = green-function: ";
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::check(const Parameters          &parameters,
+                           const physics::Scene<dim> &scene)
+    {
+      if (!scene.normal_stress())
+        throw std::invalid_argument(
+          refused + "needs a prescribed normal stress (Friction/Normal "
+                    "stress); the normal stress of the gravity equilibrium "
+                    "changes with slip");
+      Triangulation<dim> coarse;
+      scene.create_coarse_mesh(coarse);
+      for (const auto &cell : coarse.active_cell_iterators())
+        {
+          const auto id =
+            scene.material_id(cell->center(), cell->material_id());
+          const physics::Material m = scene.material(id);
+          if (m.shear_viscosity != 0 || m.bulk_viscosity != 0)
+            throw std::invalid_argument(
+              refused + "needs an elastic bulk (Materials: material " +
+              std::to_string(id) + " has shear viscosity " +
+              format_number(m.shear_viscosity) + ", bulk viscosity " +
+              format_number(m.bulk_viscosity) +
+              "; Kelvin-Voigt viscosity is not a Green's function of the "
+              "slip)");
+        }
+      const double t_end = parameters.run.end_time;
+      if ((scene.backstop_velocity(0.) - scene.backstop_velocity(t_end))
+            .norm() != 0)
+        throw std::invalid_argument(
+          refused + "needs a load velocity constant in time (Ramp time = "
+                    "0): the loading response is affine in t");
+    }
+
+
+    template <int dim>
+    GreenFault<dim>::GreenFault(const Parameters          &parameters,
+                                const physics::Scene<dim> &scene,
+                                std::ostream              &log)
+      : parameters(parameters)
+      , scene(scene)
+      , log(log)
+      , timer(log, TimerOutput::never, TimerOutput::wall_times)
+      , discretisation(parameters.mesh, scene, {parameters.run.antiplane, true})
+    {
+      check(parameters, scene);
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::setup()
+    {
+      const auto start = std::chrono::steady_clock::now();
+      {
+        TimerOutput::Scope scope(timer, "Setup");
+        discretisation.make_grid();
+        discretisation.setup_system();
+        discretisation.setup_boundary_conditions();
+        contact.setup(discretisation.dof_handler,
+                      discretisation.scalar_dof_handler,
+                      discretisation.hanging_constraints,
+                      *discretisation.partitioner,
+                      discretisation.fixed,
+                      [this](const Point<dim> &p) {
+                        return scene.friction_parameters(p);
+                      });
+        discretisation.assemble_matrices();
+        contact.set_normal_forces(scene.normal_stress());
+      }
+
+      // The radiation damping eta w_k of every node is the diagonal of C on
+      // the contact; anything else in C (dashpots, viscosity) is refused.
+      const auto       &C     = discretisation.viscosity_local;
+      const auto       &nodes = contact.contact_set().nodes;
+      std::vector<bool> on_contact(C.m(), false);
+      for (const auto &node : nodes)
+        on_contact[node.dofs[0]] = true;
+      // (the rows and columns of fixed dofs do not enter: their values
+      // are prescribed, and constrained rows carry a diagonal)
+      const auto &fixed = discretisation.fixed;
+      for (unsigned int i = 0; i < C.m(); ++i)
+        for (unsigned int e = C.row_begin(i); e < C.row_end(i); ++e)
+          if (C.value(e) != 0 && !fixed[i] && !fixed[C.column(e)] &&
+              !(on_contact[i] && C.column(e) == i))
+            throw std::invalid_argument(
+              refused + "the bulk has dashpots (Boundary roles: absorbing) "
+                        "or viscosity; only radiation damping on the "
+                        "contact is allowed");
+      damping.assign(nodes.size(), 0.);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          const unsigned int i = nodes[k].dofs[0];
+          for (unsigned int e = C.row_begin(i); e < C.row_end(i); ++e)
+            if (C.column(e) == i)
+              damping[k] = C.value(e);
+          if (contact.nodes()[k].params.cohesion != 0)
+            throw std::invalid_argument(
+              refused + "needs Friction/Cohesion = 0 (the cohesion makes "
+                        "the fault's ODE non-smooth at V = 0)");
+          if (!(damping[k] > 0))
+            throw std::invalid_argument(
+              refused + "needs radiation damping > 0 on every contact node");
+        }
+
+      {
+        TimerOutput::Scope scope(timer, "Green's function operator");
+        op = physics::compute_green_operator(
+          discretisation,
+          contact.contact_set(),
+          physics::observation_rows(discretisation,
+                                    scene,
+                                    parameters.run.antiplane));
+      }
+
+      // The initial slip is the volume path's: the tangential displacement
+      // of the gravity equilibrium on a frictionless contact (zero without
+      // gravity); the traction is then the shear prestress alone.
+      {
+        TimerOutput::Scope scope(timer, "Gravity equilibrium");
+        const auto         u = discretisation.gravity_equilibrium().first;
+        initial.slip.clear();
+        initial.alpha.clear();
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            initial.slip.push_back(u.local_element(nodes[k].dofs[0]));
+            initial.alpha.push_back(
+              scene.initial_state(contact.nodes()[k].position));
+          }
+      }
+      initial.t = 0;
+      initial.rate.resize(nodes.size());
+      slip_rates(initial.slip.data(),
+                 initial.alpha.data(),
+                 0.,
+                 initial.rate.data());
+      slip_work.reinit(nodes.size());
+      force_work.reinit(nodes.size());
+      setup_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    }
+
+
+    /**
+     * The balance F - c V = N mu(|V|, alpha) sign V of node k for V: V has
+     * the sign of F, and G(x) = N mu(e^x) + c e^x - |F| increases in
+     * x = log |V|. Newton in x from the solution without damping
+     * (V = 2 V_theta sinh(|F| / (a N)) for the regularised law), kept in
+     * the bracket [x_lo, x_hi] (x_hi = log(|F| / c), where G >= 0), with
+     * bisection when a step leaves it; converged at |dx| < 1e-12.
+     */
+    template <int dim>
+    double
+    GreenFault<dim>::slip_rate(const unsigned int k,
+                               const double       force,
+                               const double       alpha) const
+    {
+      const double T = std::abs(force);
+      if (T == 0)
+        return 0;
+      const auto          &node = contact.nodes()[k];
+      const auto          &p    = node.params;
+      const friction::Law &law  = *parameters.solver.law;
+      const double         N    = node.normal_force;
+      const double         c    = damping[k];
+      const double         term = law.state_term(p, alpha);
+      double               x_hi = std::log(T / c);
+      double               x_lo = -std::numeric_limits<double>::infinity();
+      const double         y    = T / (p.a * N);
+      // log(2 V_theta sinh y), V_theta = exp(term)
+      double x = term + (y > 20 ? y : std::log(2 * std::sinh(y)));
+      x        = std::min(x, x_hi);
+      for (unsigned int iteration = 0; iteration < 200; ++iteration)
+        {
+          const double V  = std::exp(x);
+          const auto   cd = law.coefficient_and_derivative(p, term, V);
+          const double G  = N * cd.mu + c * V - T;
+          if (G == 0)
+            break;
+          (G > 0 ? x_hi : x_lo) = x;
+          const double slope    = V * (N * cd.derivative + c);
+          double       x_new    = x - G / slope;
+          if (!(x_new > x_lo && x_new < x_hi))
+            x_new = std::isfinite(x_lo) ? 0.5 * (x_lo + x_hi) : x - 20;
+          const bool done = std::abs(x_new - x) < 1e-12 ||
+                            x_hi - x_lo < 1e-12 * std::max(1., std::abs(x));
+          x = x_new;
+          if (done)
+            break;
+        }
+      return std::copysign(std::exp(x), force);
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::slip_rates(const double *s,
+                                const double *alpha,
+                                const double  t,
+                                double       *V) const
+    {
+      const unsigned int     n = damping.size();
+      dealii::Vector<double> slip(s, s + n), force(n);
+      op.S.vmult(force, slip);
+      for (unsigned int k = 0; k < n; ++k)
+        V[k] = slip_rate(k, op.g0[k] + t * op.g1[k] - force[k], alpha[k]);
+    }
+
+
+    template <int dim>
+    int
+    GreenFault<dim>::ode_rhs(const double t, const Vector &y, Vector &dy) const
+    {
+      TimerOutput::Scope scope(timer, "Fault right-hand side");
+      const unsigned int n   = damping.size();
+      const auto        &law = *parameters.solver.law;
+      std::copy(y.begin(), y.begin() + n, slip_work.begin());
+      op.S.vmult(force_work, slip_work);
+      bool finite = true;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double V =
+            slip_rate(k, op.g0[k] + t * op.g1[k] - force_work[k], y[n + k]);
+          dy[k] = V;
+          dy[n + k] =
+            law.state_rate(contact.nodes()[k].params, y[n + k], std::abs(V));
+          finite = finite && std::isfinite(dy[k]) && std::isfinite(dy[n + k]);
+        }
+      return finite ? 0 : 1;
+    }
+
+
+    template <int dim>
+    typename GreenFault<dim>::Vector
+    GreenFault<dim>::to_ode(const State &state) const
+    {
+      const unsigned int n = state.slip.size();
+      Vector             y(2 * n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          y[k]     = state.slip[k];
+          y[n + k] = state.alpha[k];
+        }
+      return y;
+    }
+
+
+    template <int dim>
+    FaultState
+    GreenFault<dim>::from_ode(const Vector &y, const double t) const
+    {
+      const unsigned int n = y.size() / 2;
+      State              state;
+      state.t = t;
+      state.slip.assign(y.begin(), y.begin() + n);
+      state.alpha.assign(y.begin() + n, y.end());
+      state.rate.resize(n);
+      slip_rates(state.slip.data(), state.alpha.data(), t, state.rate.data());
+      return state;
+    }
+
+
+    template <int dim>
+    typename GreenFault<dim>::Vector
+    GreenFault<dim>::ode_absolute_tolerances(const double relative) const
+    {
+      const unsigned int n = damping.size();
+      Vector             a(2 * n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          a[k]     = relative * contact.nodes()[k].params.L;
+          a[n + k] = relative;
+        }
+      return a;
+    }
+
+
+    template <int dim>
+    output::Layout
+    GreenFault<dim>::layout() const
+    {
+      output::Layout      layout;
+      std::vector<double> s, w;
+      for (const auto &node : contact.nodes())
+        {
+          s.push_back(scene.along_base_coordinate(node.position));
+          w.push_back(node.weight);
+        }
+      layout.positions = contact.gather(s);
+      layout.weights   = contact.gather(w);
+      for (const auto &point : scene.observation_points())
+        {
+          layout.observation_names.push_back(point.first + "_m");
+          layout.station_names.push_back(point.first);
+        }
+      layout.convergence_rate        = scene.convergence_rate();
+      layout.interpolate_event_times = true;
+      return layout;
+    }
+
+
+    template <int dim>
+    output::Sample
+    GreenFault<dim>::sample(const State &state) const
+    {
+      const unsigned int                 n     = state.slip.size();
+      const auto                        &law   = *parameters.solver.law;
+      const auto                        &nodes = contact.nodes();
+      output::Sample                     sample;
+      std::vector<double>                rates(n), stresses(n), log10_states(n);
+      std::vector<std::array<double, 2>> slip(n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const auto &p = nodes[k].params;
+          rates[k]      = std::abs(state.rate[k]);
+          slip[k]       = {{state.slip[k], 0.}};
+          stresses[k]   = nodes[k].normal_force / nodes[k].weight *
+                        law.friction_coefficient(p, state.alpha[k], rates[k]);
+          log10_states[k] = p.log_theta(state.alpha[k]) / std::log(10.);
+        }
+      sample.slip_rates     = contact.gather(rates);
+      sample.slip           = contact.gather(slip);
+      sample.shear_stresses = contact.gather(stresses);
+      sample.log10_states   = contact.gather(log10_states);
+      for (unsigned int p = 0; p < op.O.m(); ++p)
+        {
+          double u = op.o0[p] + state.t * op.o1[p], v = op.o1[p];
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              u += op.O(p, k) * state.slip[k];
+              v += op.O(p, k) * state.rate[k];
+            }
+          sample.observations.push_back(u);
+          sample.observation_rates.push_back(v);
+        }
+      return sample;
+    }
+
+
+    template <int dim>
+    output::CheckpointIdentity
+    GreenFault<dim>::checkpoint_identity() const
+    {
+      return {parameters.run.scene + " (green-function)",
+              dim,
+              discretisation.dof_handler.n_dofs(),
+              1};
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::describe(std::ostream &log) const
+    {
+      const auto &tria = discretisation.triangulation;
+      log << "Scene: " << parameters.run.scene << " (" << dim << "D"
+          << (parameters.run.antiplane ? ", antiplane" : "") << ")\n"
+          << "Mesh: " << tria.n_global_active_cells() << " cells, "
+          << tria.n_global_levels() << " levels, "
+          << discretisation.dof_handler.n_dofs() << " unknowns, "
+          << contact.n_global_nodes() << " contact nodes\n"
+          << "Bulk: green-function, dense operator " << op.S.m() << " x "
+          << op.S.n() << " and " << op.O.m()
+          << " observation rows from a Cholesky factor of " << op.n_interior
+          << " unknowns and " << op.n_blocks << " block solves (set-up "
+          << format_number(setup_seconds) << " s)\n"
+          << "Solver: " << parameters.solver.law->name() << " law, "
+          << name_of(parameters.solver.dynamics)
+          << ", the fault's ODE by explicit Dormand-Prince 5(4) (ARKODE), "
+             "relative tolerance "
+          << parameters.time_stepping.tolerance << std::endl;
+    }
+
+
+    template <int dim>
+    bool
+    GreenFault<dim>::run(const ParameterHandler &prm, const bool resume)
+    {
+      if (!resume)
+        output::write_parameters(parameters.run.output_directory, prm);
+      setup();
+      Simulator<State> simulator(parameters, *this, log, timer);
+      return !simulator.run(resume).interrupted;
+    }
+
+
+    template class GreenFault<2>;
+    template class GreenFault<3>;
+  } // namespace models
+
+  template class Simulator<models::FaultState>;
+} // namespace rsfcycle

@@ -1,0 +1,54 @@
+// The checks across entries and subsections of the parameters, after
+// parsing (Parameters::parse_parameters calls validate()): each failure is
+// one line naming the entries and what is allowed.
+#include <rsfcycle/format.h>
+#include <rsfcycle/parameters.h>
+#include <stdexcept>
+
+namespace rsfcycle
+{
+  void
+  Parameters::validate() const
+  {
+    if (run.antiplane && (run.dimension != 2 || run.scene != "mesh-file"))
+      throw std::invalid_argument(
+        "Displacement = antiplane: needs Dimension = 2 and Scene = "
+        "mesh-file (this run has Dimension = " +
+        std::to_string(run.dimension) + ", Scene = " + run.scene + ")");
+    const auto &ts = time_stepping;
+    if (!(ts.minimum_step <= ts.initial_step))
+      throw std::invalid_argument(
+        "Time stepping/Minimum step = " + format_number(ts.minimum_step) +
+        ": must not exceed Initial step = " + format_number(ts.initial_step));
+    if (!(ts.initial_step <= ts.maximum_step))
+      throw std::invalid_argument(
+        "Time stepping/Initial step = " + format_number(ts.initial_step) +
+        ": must not exceed Maximum step = " + format_number(ts.maximum_step));
+    if (mesh.global_refinements + mesh.local_refinements > 16)
+      throw std::invalid_argument(
+        "Mesh/Global refinements + Local refinements = " +
+        std::to_string(mesh.global_refinements + mesh.local_refinements) +
+        ": at most 16 levels are allowed");
+    if (!(output.event_output_interval <= output.output_interval))
+      throw std::invalid_argument("Output/Event output interval = " +
+                                  format_number(output.event_output_interval) +
+                                  ": must not exceed Output interval = " +
+                                  format_number(output.output_interval));
+    output.seas.validate(run.dimension);
+    const bool green = solver.bulk == SolverParameters::Bulk::green_function;
+    const std::string bulk = "Solver/Bulk = green-function: needs ";
+    if (green && solver.dynamics != SolverParameters::Dynamics::quasi_dynamic)
+      throw std::invalid_argument(
+        bulk + "Solver/Dynamics = quasi-dynamic (this run has " +
+        name_of(solver.dynamics) +
+        ": inertia or no radiation damping is no Green's function ODE)");
+    if (green && run.dimension != 2)
+      throw std::invalid_argument(bulk + "Dimension = 2 (3D is not done)");
+    if (green != (ts.integrator == "runge-kutta") &&
+        run.scene != "spring-slider")
+      throw std::invalid_argument(
+        green ? bulk + "Time stepping/Integrator = runge-kutta" :
+                "Time stepping/Integrator = runge-kutta: needs Solver/Bulk = "
+                "green-function for a continuum scene");
+  }
+} // namespace rsfcycle

@@ -1,0 +1,155 @@
+// SEAS BP1-QD (prm/seas-bp1-qd.prm) on 200 m cells (3 local refinements),
+// to the end of the first event, with both methods of Solver/Bulk on the
+// same mesh: volume (the implicit trapezoidal step over the mesh, TNNMG
+// with the direct correction) and green-function (the fault's Green's
+// functions and ARKODE's explicit Dormand-Prince 5(4)). Both discretise the
+// same semi-discrete problem (the same stiffness, lumped weights, radiation
+// damping and friction law), so they must agree to their time-integration
+// errors. Checked (yes/no lines, the figures on a scale numdiff sees):
+//  - both have exactly one event by the end (Stop after events = 1), the
+//    green-function path's first event within 0.1 % of the volume path's
+//    start time (printed: both in years and the relative difference);
+//  - the peak slip rates within 2 % (log10 V printed);
+//  - the coseismic slip at the surface (time-series column fn+00 at the
+//    end) within 1 %;
+//  - the nucleation positions within 2 cells (400 m).
+#include "tests.h"
+
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <rsfcycle/models/green_fault.h>
+#include <rsfcycle/parameters.h>
+#include <rsfcycle/problem_base.h>
+#include <rsfcycle/scenes/registry.h>
+#include <sstream>
+
+using namespace rsfcycle;
+
+namespace
+{
+  std::vector<std::vector<double>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream                    in(file);
+    std::string                      line;
+    std::vector<std::vector<double>> rows;
+    std::getline(in, line);
+    while (std::getline(in, line))
+      {
+        std::vector<double> row;
+        std::stringstream   s(line);
+        std::string         cell;
+        while (std::getline(s, cell, ','))
+          row.push_back(cell == "-" || cell.empty() ? 0. : std::stod(cell));
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  struct Result
+  {
+    std::vector<std::vector<double>> events;
+    double                           surface_slip = 0;
+  };
+
+  Result
+  run(const std::string &settings, const std::string &dir)
+  {
+    const std::string        source = SOURCE_DIR;
+    dealii::ParameterHandler prm;
+    scenes::declare_parameters(prm);
+    prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
+    prm.parse_input_from_string("set Output directory = " + dir +
+                                "\n"
+                                "set Overwrite output = true\n"
+                                "set Stop after events = 1\n"
+                                "subsection Mesh file\n"
+                                "  set File = " +
+                                source +
+                                "/../prm/meshes/seas-bp1.msh\n"
+                                "end\n"
+                                "subsection Mesh\n"
+                                "  set Local refinements = 3\n"
+                                "end\n"
+                                "subsection Output\n"
+                                "  set Write VTU = false\n"
+                                "  set Progress interval = 1e9\n"
+                                "  subsection SEAS\n"
+                                "    set Problem =\n"
+                                "  end\n"
+                                "end\n" +
+                                settings);
+    Parameters parameters;
+    parameters.parse_parameters(prm);
+    const auto         scene = scenes::make_scene<2>("mesh-file", prm);
+    std::ostringstream log;
+    if (parameters.solver.bulk == SolverParameters::Bulk::green_function)
+      {
+        models::GreenFault<2> fault(parameters, *scene, log);
+        fault.run(prm);
+      }
+    else
+      {
+        ProblemBase<2> problem(parameters, *scene, log);
+        problem.run(prm);
+      }
+    Result result;
+    result.events     = read_csv(dir + "/events.csv");
+    const auto series = read_csv(dir + "/time-series.csv");
+    // fn+00 is the first observation column after the 7 fixed ones
+    result.surface_slip = series.back()[7];
+    return result;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog(6);
+  const double year = 3.15576e7;
+
+  const Result volume = run("subsection Solver\n"
+                            "  set Linear correction = direct\n"
+                            "end\n",
+                            "output-volume");
+  const Result green  = run("subsection Time stepping\n"
+                            "  set Integrator = runge-kutta\n"
+                            "  set Tolerance = 1e-7\n"
+                            "end\n"
+                            "subsection Solver\n"
+                            "  set Bulk = green-function\n"
+                            "end\n",
+                           "output-green");
+
+  dealii::deallog << "events: volume " << volume.events.size() << ", green "
+                  << green.events.size() << " (one each: "
+                  << (volume.events.size() == 1 && green.events.size() == 1 ?
+                        "yes" :
+                        "no")
+                  << ")" << std::endl;
+  if (volume.events.empty() || green.events.empty())
+    return 0;
+  const auto  &v = volume.events[0], &g = green.events[0];
+  const double dt = (g[1] - v[1]) / v[1];
+  dealii::deallog << "first event [yr]: volume " << v[1] / year << ", green "
+                  << g[1] / year << "; relative difference within 0.1 %: "
+                  << (std::abs(dt) < 1e-3 ? "yes" : "no") << std::endl;
+  dealii::deallog << "peak log10 V [m/s]: volume " << std::log10(v[5])
+                  << ", green " << std::log10(g[5]) << "; within 2 %: "
+                  << (std::abs(g[5] / v[5] - 1) < 0.02 ? "yes" : "no")
+                  << std::endl;
+  dealii::deallog << "surface slip at the end [m]: volume "
+                  << volume.surface_slip << ", green " << green.surface_slip
+                  << "; within 1 %: "
+                  << (std::abs(green.surface_slip / volume.surface_slip - 1) <
+                          0.01 ?
+                        "yes" :
+                        "no")
+                  << std::endl;
+  dealii::deallog << "nucleation [km]: volume " << v[4] / 1e3 << ", green "
+                  << g[4] / 1e3 << "; within 400 m: "
+                  << (std::abs(g[4] - v[4]) <= 400 ? "yes" : "no") << std::endl;
+  return 0;
+}

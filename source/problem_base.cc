@@ -5,6 +5,7 @@
 #include <map>
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/models/contact_layout.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/problem_base.h>
@@ -389,29 +390,7 @@ namespace rsfcycle
   output::Layout
   ProblemBase<dim>::layout() const
   {
-    output::Layout      layout;
-    std::vector<double> s, z, w;
-    for (const auto &node : contact.nodes())
-      {
-        s.push_back(scene.along_base_coordinate(node.position));
-        z.push_back(node.position[dim - 1]);
-        w.push_back(node.weight);
-      }
-    layout.positions = contact.gather(s);
-    layout.weights   = contact.gather(w);
-    if (dim == 3)
-      layout.lateral_positions = contact.gather(z);
-    for (const auto &point : scene.observation_points())
-      {
-        layout.observation_names.push_back(point.first + "_m");
-        layout.station_names.push_back(point.first);
-      }
-    layout.convergence_rate = scene.convergence_rate();
-    // event times and slips as accurate as the solution, not quantised by
-    // the onset step (which also makes them independent of the number of
-    // ranks, whose iterates differ within the solver tolerances)
-    layout.interpolate_event_times = true;
-    return layout;
+    return models::contact_layout(scene, contact);
   }
 
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
+#include <rsfcycle/models/contact_layout.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/simulator/simulator.templates.h>
@@ -303,23 +304,7 @@ namespace rsfcycle
     output::Layout
     GreenFault<dim>::layout() const
     {
-      output::Layout      layout;
-      std::vector<double> s, w;
-      for (const auto &node : contact.nodes())
-        {
-          s.push_back(scene.along_base_coordinate(node.position));
-          w.push_back(node.weight);
-        }
-      layout.positions = contact.gather(s);
-      layout.weights   = contact.gather(w);
-      for (const auto &point : scene.observation_points())
-        {
-          layout.observation_names.push_back(point.first + "_m");
-          layout.station_names.push_back(point.first);
-        }
-      layout.convergence_rate        = scene.convergence_rate();
-      layout.interpolate_event_times = true;
-      return layout;
+      return contact_layout(scene, contact);
     }
 
 

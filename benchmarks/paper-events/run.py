@@ -128,6 +128,23 @@ VARIANTS = [
      "gravity equilibrium -> rho g h cos^2(dip) prescribed (the normal "
      "component of the column's weight per base area)",
      friction(f"Normal stress = {COLUMN} * cos(atan(0.27))^2")),
+    ("sigma-equilibrium", "mesh", "control", "normal stress on the base",
+     "the gravity equilibrium's own values -> their fit 1.021 rho g h "
+     "prescribed (does prescribing change anything by itself?)",
+     friction(f"Normal stress = 1.021 * {COLUMN}")),
+    ("sigma-x1.05", "mesh", "choice", "normal stress on the base",
+     "gravity equilibrium -> 1.05 x its fit (1.072 rho g h) prescribed",
+     friction(f"Normal stress = 1.05 * 1.021 * {COLUMN}")),
+    ("sigma-x1.10", "mesh", "choice", "normal stress on the base",
+     "gravity equilibrium -> 1.10 x its fit (1.123 rho g h) prescribed",
+     friction(f"Normal stress = 1.10 * 1.021 * {COLUMN}")),
+    ("sigma-loaded", "mesh", "choice", "normal stress on the base",
+     "gravity equilibrium (held fixed) -> the normal stress of the loaded, "
+     "cycling wedge (normal_stress.py at 510 - 650 s: 1.30 x the "
+     "equilibrium's up to s = 0.45 m, 1.10 beyond 0.6 m) prescribed",
+     friction(f"Normal stress = 1.021 * {COLUMN} * "
+              "if(x <= 0.4345, 1.30, if(x >= 0.5793, 1.10, "
+              "1.30 - 0.20 * (x - 0.4345) / 0.1448))")),
     ("gravity-normal", "mesh", "choice", "direction of gravity",
      "vertical in the physical frame, rotated with the wedge -> g "
      "perpendicular to the base (the base frame's -y, no down-dip part); "
@@ -234,7 +251,7 @@ def convergence_module():
 
 COLUMNS = ["events_1000s", "first_event_s", "recurrence_s",
            "recurrence_min_s", "recurrence_max_s", "rupture_width_m",
-           "peak_slip_rate_m_per_s", "slip_um", "duration_s",
+           "peak_slip_rate_mm_per_s", "slip_um", "duration_s",
            "uplift_15cm_um", "uplift_30cm_um", "uplift_45cm_um",
            "nucleation_position_m", "unknowns"]
 
@@ -246,6 +263,8 @@ def statistics(name):
     events = list(csv.DictReader(open(os.path.join(d, "events.csv"))))
     starts = [float(e["start_s"]) for e in events]
     rec = [float(e["recurrence_s"]) for e in events[conv.TRANSITION:]]
+    # event_statistics() gives the peak slip rate in mm/s already
+    row["peak_slip_rate_mm_per_s"] = row.pop("peak_slip_rate_m_per_s")
     row.update(events_1000s=sum(1 for t in starts if 0 <= t <= T_END),
                first_event_s=starts[0], recurrence_min_s=min(rec),
                recurrence_max_s=max(rec))
@@ -305,8 +324,8 @@ def table(rows=None):
               f"{r['recurrence_s']:.3f}{rel('recurrence_s')}{spread} | "
               f"{int(r['events_1000s'])}{d_events} | "
               f"{r['rupture_width_m']:.3f}{rel('rupture_width_m')} | "
-              f"{1e3 * r['peak_slip_rate_m_per_s']:.3f}"
-              f"{rel('peak_slip_rate_m_per_s')} | "
+              f"{r['peak_slip_rate_mm_per_s']:.3f}"
+              f"{rel('peak_slip_rate_mm_per_s')} | "
               f"{r['slip_um']:.1f}{rel('slip_um')} | "
               f"{r['uplift_15cm_um']:.1f} / {r['uplift_30cm_um']:.1f} / "
               f"{r['uplift_45cm_um']:.1f} |")
@@ -351,7 +370,7 @@ def plot(rows=None):
     labels = [r["name"] + (" *" if r["scene"] == "mesh" else "")
               for r in rows]
     y = list(range(len(rows)))[::-1]
-    colours = {"reference": "black", "choice": "tab:blue",
+    colours = {"reference": "black", "control": "black", "choice": "tab:blue",
                "table": "tab:green", "sensitivity": "tab:gray"}
     c = [colours[r["group"]] for r in rows]
     panels = [

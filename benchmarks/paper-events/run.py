@@ -31,9 +31,10 @@ Usage (from anywhere; the binary runs in the repository's root, where
 prm/wedge-2d-mesh.prm's mesh path resolves):
   benchmarks/paper-events/run.py [--exe BINARY] [--work DIR] [--only a,b]
                                  [--rerun]     # run what is missing, table
-  benchmarks/paper-events/run.py --table       # table from the run folders
+  benchmarks/paper-events/run.py --table       # results.csv, results.md
   benchmarks/paper-events/run.py --plot        # figures/*.png
-  benchmarks/paper-events/run.py --thresholds  # event definitions
+  benchmarks/paper-events/run.py --thresholds [--thresholds-run a,b]
+                                 # event definitions (thresholds.*)
   benchmarks/paper-events/run.py --list        # the variants and readings
 """
 import csv
@@ -185,6 +186,9 @@ VARIANTS = [
      "0.002 -> 0.001 (b - a = 0.015 kept)", wedge("Patch a = 0.001")),
     ("a-outside-0.010", "wedge", "table", "a off the patch (0.010 - 0.020)",
      "0.020 -> 0.010 (b - a = -0.015 kept)", wedge("Outside a = 0.010")),
+    ("a-outside-0.015", "wedge", "table", "a off the patch (0.010 - 0.020)",
+     "0.020 -> 0.015 (b - a = -0.015 kept; the middle of the range)",
+     wedge("Outside a = 0.015")),
     ("ba-outside-0.010", "wedge", "table",
      "b - a off the patch (-0.020 - -0.010)", "-0.015 -> -0.010",
      wedge("Outside b - a = -0.010")),
@@ -193,7 +197,9 @@ VARIANTS = [
      wedge("Outside b - a = -0.020")),
     # -- Table 1 values without a stated range (sensitivity only) ---------
     ("nu-0.35", "wedge", "sensitivity", "Poisson ratio (simulation 0.3)",
-     "0.3 -> 0.35 (K kept: G 36 % lower)", wedge("Poisson ratio = 0.35")),
+     "0.3 -> 0.35 (K kept: G 28 % lower)", wedge("Poisson ratio = 0.35")),
+    ("nu-0.25", "wedge", "sensitivity", "Poisson ratio (simulation 0.3)",
+     "0.3 -> 0.25 (K kept: G 30 % higher)", wedge("Poisson ratio = 0.25")),
     ("L-30um", "wedge", "sensitivity", "L (simulation 22.5 um)",
      "22.5 um -> 30 um", wedge("Characteristic slip distance = 30e-6")),
     ("eta-upper-10k", "wedge", "sensitivity",
@@ -300,6 +306,17 @@ def read_results():
 
 
 def table(rows=None):
+    """The markdown table, printed and written to results.md."""
+    import contextlib
+    import io
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        _table(rows)
+    open(os.path.join(HERE, "results.md"), "w").write(buf.getvalue())
+    print(buf.getvalue(), end="")
+
+
+def _table(rows=None):
     rows = rows or read_results()
     by = {r["name"]: r for r in rows}
     print("| reading | scene | first event [s] | recurrence [s] (range) | "
@@ -332,33 +349,61 @@ def table(rows=None):
               f"{r['uplift_45cm_um']:.1f} |")
 
 
-def thresholds(name="default"):
+THRESHOLDS = (1.05, 1.5, 2, 5, 10, 15, 20, 25, 27.5)
+
+
+def thresholds(names=("default", "sigma-x1.05", "a-outside-0.015")):
     """Event count, first start, recurrence, width, duration under other
-    event definitions, from one run's time-series.csv (every accepted step:
-    max slip rate) and base-profile.csv (rates per node)."""
+    event definitions, from the runs' time-series.csv (every accepted step:
+    max slip rate) and base-profile.csv (rates per node); no new runs.
+    Starts are the first accepted step above the threshold (events.csv
+    interpolates them). Written to thresholds.csv and thresholds.md."""
     import plot_wedge
-    d = os.path.join(WORK, name)
-    ts = plot_wedge.read_time_series(d)
-    profile = plot_wedge.read_base_profile(d)
     v0 = 50e-6
-    print("| event: max V above | events in 1000 s | first event [s] | "
-          "recurrence, events 9 - [s] | rupture width [m] | duration [s] |")
-    print("|---" * 6 + "|")
-    out = []
-    for k in (1.05, 1.5, 2, 5, 10, 15, 20, 25, 27.5):
-        ev = plot_wedge.detect_events(ts, profile, v0, k)
-        n = sum(1 for e in ev if 0 <= e.start <= T_END)
-        after = ev[8:]
-        rec = [e.recurrence for e in after]
-        line = (f"| {k:g} v0 | {n} | "
-                + (f"{ev[0].start:.1f} | " if ev else "– | ")
-                + (f"{sum(rec) / len(rec):.3f} | "
-                   f"{sum(e.width for e in after) / len(after):.3f} | "
-                   f"{sum(e.duration for e in after) / len(after):.3f} |"
-                   if after else "– | – | – |"))
-        print(line)
-        out.append((k, n))
-    return out
+    rows = []
+    for name in names:
+        d = os.path.join(WORK, name)
+        if not finished(d):
+            continue
+        ts = plot_wedge.read_time_series(d)
+        profile = plot_wedge.read_base_profile(d)
+        for k in THRESHOLDS:
+            ev = plot_wedge.detect_events(ts, profile, v0, k)
+            after = ev[8:]
+            mean = (lambda f: sum(f(e) for e in after) / len(after)) \
+                if after else (lambda f: float("nan"))
+            rows.append(dict(
+                run=name, threshold_v0=k,
+                events_1000s=sum(1 for e in ev if 0 <= e.start <= T_END),
+                first_event_s=ev[0].start if ev else float("nan"),
+                recurrence_s=mean(lambda e: e.recurrence),
+                rupture_width_m=mean(lambda e: e.width),
+                duration_s=mean(lambda e: e.duration)))
+    keys = ["run", "threshold_v0", "events_1000s", "first_event_s",
+            "recurrence_s", "rupture_width_m", "duration_s"]
+    with open(os.path.join(HERE, "thresholds.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float)
+                            else r[k]) for k in keys})
+
+    def fmt(x, spec):
+        return "–" if x != x else format(x, spec)
+    lines = ["| run | event: max V above | events in 1000 s | "
+             "first event [s] | recurrence, events 9 - [s] | "
+             "rupture width [m] | duration [s] |", "|---" * 7 + "|"]
+    for r in rows:
+        lines.append(f"| `{r['run']}` | {r['threshold_v0']:g} v0 | "
+                     f"{r['events_1000s']} | "
+                     f"{fmt(r['first_event_s'], '.1f')} | "
+                     f"{fmt(r['recurrence_s'], '.3f')} | "
+                     f"{fmt(r['rupture_width_m'], '.3f')} | "
+                     f"{fmt(r['duration_s'], '.3f')} |")
+    text = "\n".join(lines) + "\n"
+    open(os.path.join(HERE, "thresholds.md"), "w").write(text)
+    print(text, end="")
+    return rows
 
 
 def plot(rows=None):
@@ -492,7 +537,9 @@ def main():
             print(f"{name} [{base}, {group}] {choice}: {reading}")
         return
     if "--thresholds" in sys.argv:
-        thresholds(arg("--thresholds-run", "default"))
+        names = arg("--thresholds-run", "")
+        thresholds(names.split(",") if names else
+                   ("default", "sigma-x1.05", "a-outside-0.015"))
         return
     if "--table" in sys.argv:
         return table(collect())

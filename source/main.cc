@@ -200,8 +200,9 @@ namespace
 
   /**
    * Build the scene's simulation (bad input fails here, before anything is
-   * written), start MPI if it needs it (one thread either way), prepare the
-   * run folder and the log, run. Returns false if the run was interrupted by
+   * written), start MPI if it needs it (one thread either way), let the
+   * simulation prepare what may still refuse the input, prepare the run
+   * folder and the log, run. Returns false if the run was interrupted by
    * a signal.
    */
   bool
@@ -229,6 +230,7 @@ namespace
         "Solver/Linear correction = direct runs on one MPI rank, not on " +
         std::to_string(n_processes) +
         ": choose multigrid or amg, or start it without mpirun");
+    simulation->prepare(resume);
     // The first rank prepares the folder and writes the log; every rank
     // learns whether the folder was refused.
     const bool root = rsfcycle::output::is_root();

@@ -42,6 +42,10 @@ namespace rsfcycle
         bulk + "Solver/Dynamics = quasi-dynamic (this run has " +
         name_of(solver.dynamics) +
         ": inertia or no radiation damping is no Green's function ODE)");
+    if (!green && !solver.green_operator_file.empty())
+      throw std::invalid_argument(
+        "Solver/Green operator file = " + solver.green_operator_file +
+        ": needs Solver/Bulk = green-function");
     if (green && run.dimension != 2)
       throw std::invalid_argument(bulk + "Dimension = 2 (3D is not done)");
     if (green != (ts.integrator == "runge-kutta") &&

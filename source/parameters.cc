@@ -355,6 +355,18 @@ namespace rsfcycle
       "fault's ODE by Time stepping/Integrator = runge-kutta: quasi-dynamic, "
       "elastic, prescribed normal stress, constant load, one MPI rank");
     prm.declare_entry(
+      "Green operator file",
+      "",
+      Anything(),
+      "Solver/Bulk = green-function: the file green-operator.bin of an "
+      "earlier run on the same mesh, material, boundary roles, loads and "
+      "observation points (friction, normal stress and radiation damping "
+      "may differ), reused instead of computing the operator; a relative "
+      "path is looked up beside the .prm first. A file written for another "
+      "set-up, damaged or of another format is refused before anything is "
+      "written. Empty: compute the operator (every run writes it to its "
+      "run folder)");
+    prm.declare_entry(
       "Theta",
       "0.5",
       Double(0.5, 1),
@@ -446,6 +458,7 @@ namespace rsfcycle
     coupling              = Choice<Coupling>::parse(prm.get("Coupling"));
     dynamics              = Choice<Dynamics>::parse(prm.get("Dynamics"));
     bulk                  = Choice<Bulk>::parse(prm.get("Bulk"));
+    green_operator_file   = prm.get("Green operator file");
     theta                 = prm.get_double("Theta");
     spectral_radius       = prm.get_double("Spectral radius");
     fixed_point_tolerance = prm.get_double("Fixed-point tolerance");

@@ -166,6 +166,11 @@ namespace rsfcycle
     Coupling                             coupling = Coupling::fixed_point;
     Dynamics                             dynamics = Dynamics::dynamic;
     Bulk                                 bulk     = Bulk::volume;
+    /**
+     * `Green operator file`: the operator of an earlier green-function run
+     * to reuse (absolute after parsing), or empty to compute it.
+     */
+    std::string green_operator_file;
     /** The time scheme's name; time/schemes.h makes it. */
     std::string time_scheme = "theta";
     double      theta       = 0.5;

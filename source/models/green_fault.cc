@@ -19,7 +19,9 @@ namespace rsfcycle
     namespace
     {
       const std::string refused = "Solver/Bulk = green-function: ";
-    }
+      /** The operator's file in the run folder. */
+      const std::string operator_file = "green-operator.bin";
+    } // namespace
 
 
     template <int dim>
@@ -73,7 +75,7 @@ namespace rsfcycle
 
     template <int dim>
     void
-    GreenFault<dim>::setup()
+    GreenFault<dim>::setup(const bool resume)
     {
       const auto start = std::chrono::steady_clock::now();
       {
@@ -129,12 +131,29 @@ namespace rsfcycle
 
       {
         TimerOutput::Scope scope(timer, "Green's function operator");
-        op = physics::compute_green_operator(
-          discretisation,
-          contact.contact_set(),
+        const auto         observations =
           physics::observation_rows(discretisation,
                                     scene,
-                                    parameters.run.antiplane));
+                                    parameters.run.antiplane);
+        fingerprint = physics::operator_fingerprint(discretisation,
+                                                    contact.contact_set(),
+                                                    observations);
+        operator_source =
+          resume ? parameters.run.output_directory + "/" + operator_file :
+                   parameters.solver.green_operator_file;
+        if (operator_source.empty())
+          op = physics::compute_green_operator(discretisation,
+                                               contact.contact_set(),
+                                               observations);
+        else
+          op =
+            physics::read_green_operator(operator_source,
+                                         resume ? "--resume" :
+                                                  "Solver/Green operator file",
+                                         fingerprint,
+                                         discretisation.dof_handler.n_dofs(),
+                                         nodes.size(),
+                                         observations.size());
       }
 
       // The initial slip is the volume path's: the tangential displacement
@@ -163,6 +182,7 @@ namespace rsfcycle
       setup_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
+      is_set_up = true;
     }
 
 
@@ -369,10 +389,13 @@ namespace rsfcycle
           << discretisation.dof_handler.n_dofs() << " unknowns, "
           << contact.n_global_nodes() << " contact nodes\n"
           << "Bulk: green-function, dense operator " << op.S.m() << " x "
-          << op.S.n() << " and " << op.O.m()
-          << " observation rows from a Cholesky factor of " << op.n_interior
-          << " unknowns and " << op.n_blocks << " block solves (set-up "
-          << format_number(setup_seconds) << " s)\n"
+          << op.S.n() << " and " << op.O.m() << " observation rows ";
+      if (operator_source.empty())
+        log << "from a Cholesky factor of " << op.n_interior << " unknowns and "
+            << op.n_blocks << " block solves";
+      else
+        log << "read from " << operator_source;
+      log << " (set-up " << format_number(setup_seconds) << " s)\n"
           << "Solver: " << parameters.solver.law->name() << " law, "
           << name_of(parameters.solver.dynamics)
           << ", the fault's ODE by explicit Dormand-Prince 5(4) (ARKODE), "
@@ -385,9 +408,17 @@ namespace rsfcycle
     bool
     GreenFault<dim>::run(const ParameterHandler &prm, const bool resume)
     {
+      if (!is_set_up)
+        setup(resume);
       if (!resume)
-        output::write_parameters(parameters.run.output_directory, prm);
-      setup();
+        {
+          output::write_parameters(parameters.run.output_directory, prm);
+          physics::write_green_operator(parameters.run.output_directory + "/" +
+                                          operator_file,
+                                        op,
+                                        fingerprint,
+                                        discretisation.dof_handler.n_dofs());
+        }
       Simulator<State> simulator(parameters, *this, log, timer);
       return !simulator.run(resume).interrupted;
     }

@@ -1,12 +1,17 @@
 // The fault's Green's functions from the assembled stiffness
 // (physics/green_operator.h, MODEL.md §8.1).
 #include <algorithm>
+#include <boost/crc.hpp>
+#include <cstring>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <filesystem>
+#include <fstream>
+#include <rsfcycle/format.h>
 #include <rsfcycle/physics/green_operator.h>
 #include <rsfcycle/solvers/sparse_cholesky.h>
 #include <stdexcept>
@@ -226,6 +231,214 @@ namespace rsfcycle
     }
 
 
+    template <int dim>
+    std::uint32_t
+    operator_fingerprint(const Discretisation<dim>         &discretisation,
+                         const solvers::ContactSet         &contact,
+                         const std::vector<ObservationRow> &observations)
+    {
+      boost::crc_32_type crc;
+      const auto add = [&](const auto x) { crc.process_bytes(&x, sizeof x); };
+      const la::LocalMatrix &K = discretisation.stiffness_local;
+      la::Vector             v_b;
+      discretisation.reinit(v_b);
+      discretisation.set_fixed_values(v_b, 0.);
+      add(static_cast<std::uint64_t>(K.m()));
+      for (unsigned int i = 0; i < K.m(); ++i)
+        {
+          add(static_cast<std::uint8_t>(discretisation.fixed[i]));
+          add(discretisation.body_force.local_element(i));
+          add(discretisation.prestress_force.local_element(i));
+          add(v_b.local_element(i));
+          for (unsigned int e = K.row_begin(i); e < K.row_end(i); ++e)
+            {
+              add(static_cast<std::uint32_t>(K.column(e)));
+              add(K.value(e));
+            }
+        }
+      for (const auto &node : contact.nodes)
+        add(static_cast<std::uint32_t>(node.dofs[0]));
+      for (const auto &row : observations)
+        {
+          add(static_cast<std::uint64_t>(row.size()));
+          for (const auto &[j, w] : row)
+            {
+              add(static_cast<std::uint32_t>(j));
+              add(w);
+            }
+        }
+      return crc.checksum();
+    }
+
+
+    namespace
+    {
+      // the header of green-operator.bin (little-endian, as written)
+      constexpr char        magic[8] = {'r', 's', 'f', 'g', 'r', 'e', 'e', 'n'};
+      constexpr std::size_t header_size    = 48;
+      constexpr std::size_t format_at      = 8;  // uint32
+      constexpr std::size_t fingerprint_at = 12; // uint32
+      constexpr std::size_t n_dofs_at      = 16; // uint64
+      constexpr std::size_t n_contact_at   = 24; // uint64
+      constexpr std::size_t n_obs_at       = 32; // uint64
+      constexpr std::size_t payload_crc_at = 40; // uint32, of the payload
+      constexpr std::size_t header_crc_at  = 44; // uint32, of [0, 44)
+
+      std::uint32_t
+      crc32(const char *data, const std::size_t n)
+      {
+        boost::crc_32_type crc;
+        crc.process_bytes(data, n);
+        return crc.checksum();
+      }
+
+      template <class T>
+      void
+      put(std::string &bytes, const std::size_t at, const T x)
+      {
+        std::memcpy(bytes.data() + at, &x, sizeof x);
+      }
+
+      template <class T>
+      T
+      get(const std::string &bytes, const std::size_t at)
+      {
+        T x;
+        std::memcpy(&x, bytes.data() + at, sizeof x);
+        return x;
+      }
+
+      std::size_t
+      payload_doubles(const std::uint64_t n_c, const std::uint64_t n_o)
+      {
+        return n_c * n_c + 2 * n_c + n_o * n_c + 2 * n_o;
+      }
+    } // namespace
+
+
+    void
+    write_green_operator(const std::string   &file,
+                         const GreenOperator &op,
+                         const std::uint32_t  fingerprint,
+                         const std::uint64_t  n_dofs)
+    {
+      const std::uint64_t n_c = op.S.m(), n_o = op.O.m();
+      std::string bytes(header_size + 8 * payload_doubles(n_c, n_o), '\0');
+      std::size_t at     = header_size;
+      const auto  append = [&](const double *x, const std::size_t n) {
+        std::memcpy(bytes.data() + at, x, 8 * n);
+        at += 8 * n;
+      };
+      for (unsigned int r = 0; r < n_c; ++r)
+        append(&op.S(r, 0), n_c);
+      append(op.g0.data(), n_c);
+      append(op.g1.data(), n_c);
+      for (unsigned int p = 0; p < n_o; ++p)
+        append(&op.O(p, 0), n_c);
+      append(op.o0.data(), n_o);
+      append(op.o1.data(), n_o);
+      std::memcpy(bytes.data(), magic, sizeof magic);
+      put(bytes, format_at, green_operator_format);
+      put(bytes, fingerprint_at, fingerprint);
+      put(bytes, n_dofs_at, n_dofs);
+      put(bytes, n_contact_at, n_c);
+      put(bytes, n_obs_at, n_o);
+      put(bytes,
+          payload_crc_at,
+          crc32(bytes.data() + header_size, bytes.size() - header_size));
+      put(bytes, header_crc_at, crc32(bytes.data(), header_crc_at));
+
+      const std::string tmp = file + ".tmp";
+      {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(bytes.data(), bytes.size());
+        out.close();
+        if (!out)
+          throw std::runtime_error(tmp + ": cannot be written");
+      }
+      std::error_code error;
+      std::filesystem::rename(tmp, file, error);
+      if (error)
+        throw std::runtime_error(file + ": cannot be written (" +
+                                 error.message() + ")");
+    }
+
+
+    GreenOperator
+    read_green_operator(const std::string  &file,
+                        const std::string  &what,
+                        const std::uint32_t fingerprint,
+                        const std::uint64_t n_dofs,
+                        const unsigned int  n_contact,
+                        const unsigned int  n_observations)
+    {
+      const auto refuse = [&](const std::string &why) {
+        return std::invalid_argument(what + ": " + file + ": " + why);
+      };
+      std::ifstream in(file, std::ios::binary);
+      if (!in)
+        throw refuse("cannot be read");
+      const std::string bytes((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+      if (bytes.size() < header_size ||
+          std::memcmp(bytes.data(), magic, sizeof magic) != 0)
+        throw refuse("not a Green's-function operator file of rsfcycle");
+      if (crc32(bytes.data(), header_crc_at) !=
+          get<std::uint32_t>(bytes, header_crc_at))
+        throw refuse("checksum mismatch in the header: the file is damaged");
+      if (const auto format = get<std::uint32_t>(bytes, format_at);
+          format != green_operator_format)
+        throw refuse("format " + std::to_string(format) +
+                     ", this program reads format " +
+                     std::to_string(green_operator_format));
+      const auto n_c = get<std::uint64_t>(bytes, n_contact_at);
+      const auto n_o = get<std::uint64_t>(bytes, n_obs_at);
+      if (bytes.size() != header_size + 8 * payload_doubles(n_c, n_o))
+        throw refuse(
+          "truncated (" + std::to_string(bytes.size()) +
+          " bytes, the header promises " +
+          std::to_string(header_size + 8 * payload_doubles(n_c, n_o)) + ")");
+      if (crc32(bytes.data() + header_size, bytes.size() - header_size) !=
+          get<std::uint32_t>(bytes, payload_crc_at))
+        throw refuse("checksum mismatch in the operator: the file is damaged");
+      if (n_c != n_contact || n_o != n_observations ||
+          get<std::uint64_t>(bytes, n_dofs_at) != n_dofs)
+        throw refuse(
+          "written for " +
+          std::to_string(get<std::uint64_t>(bytes, n_dofs_at)) + " unknowns, " +
+          std::to_string(n_c) + " contact nodes and " + std::to_string(n_o) +
+          " observation points; this run has " + std::to_string(n_dofs) + ", " +
+          std::to_string(n_contact) + " and " + std::to_string(n_observations) +
+          " (another mesh or scene)");
+      if (get<std::uint32_t>(bytes, fingerprint_at) != fingerprint)
+        throw refuse("written for another stiffness, load or set of "
+                     "observation points than this run's (the same sizes, "
+                     "another material, boundary role, load or prestress)");
+
+      GreenOperator op;
+      std::size_t   at   = header_size;
+      const auto    take = [&](double *x, const std::size_t n) {
+        std::memcpy(x, bytes.data() + at, 8 * n);
+        at += 8 * n;
+      };
+      op.S.reinit(n_c, n_c);
+      op.g0.reinit(n_c);
+      op.g1.reinit(n_c);
+      op.O.reinit(n_o, n_c);
+      op.o0.reinit(n_o);
+      op.o1.reinit(n_o);
+      for (unsigned int r = 0; r < n_c; ++r)
+        take(&op.S(r, 0), n_c);
+      take(op.g0.data(), n_c);
+      take(op.g1.data(), n_c);
+      for (unsigned int p = 0; p < n_o; ++p)
+        take(&op.O(p, 0), n_c);
+      take(op.o0.data(), n_o);
+      take(op.o1.data(), n_o);
+      return op;
+    }
+
+
     template std::vector<ObservationRow>
     observation_rows(const Discretisation<2> &, const Scene<2> &, bool);
     template std::vector<ObservationRow>
@@ -240,5 +453,13 @@ namespace rsfcycle
                            const solvers::ContactSet &,
                            const std::vector<ObservationRow> &,
                            unsigned int);
+    template std::uint32_t
+    operator_fingerprint(const Discretisation<2> &,
+                         const solvers::ContactSet &,
+                         const std::vector<ObservationRow> &);
+    template std::uint32_t
+    operator_fingerprint(const Discretisation<3> &,
+                         const solvers::ContactSet &,
+                         const std::vector<ObservationRow> &);
   } // namespace physics
 } // namespace rsfcycle

@@ -38,7 +38,8 @@ namespace rsfcycle
     {
       // The entries that name an input file, as (subsection, entry); a
       // scene with a new file entry adds it here.
-      rsfcycle::parse_parameter_file(prm, file, {{"Mesh file", "File"}});
+      rsfcycle::parse_parameter_file(
+        prm, file, {{"Mesh file", "File"}, {"Solver", "Green operator file"}});
     }
 
 
@@ -73,15 +74,30 @@ namespace rsfcycle
             models::GreenFault<dim>::check(parameters, *scene);
         }
 
+        /** green-function: the model and its operator (it may refuse). */
+        void
+        prepare(const bool resume) override
+        {
+          if (green_function())
+            {
+              fault = std::make_unique<models::GreenFault<dim>>(parameters,
+                                                                *scene,
+                                                                fault_log);
+              fault->setup(resume);
+            }
+        }
+
         bool
         run(const ParameterHandler &prm,
             std::ostream           &log,
             const bool              resume) override
         {
-          if (green_function())
+          if (fault)
             {
-              models::GreenFault<dim> fault(parameters, *scene, log);
-              return fault.run(prm, resume);
+              // the log exists only now: the model writes through fault_log
+              fault_log.rdbuf(log.rdbuf());
+              fault_log.exceptions(log.exceptions());
+              return fault->run(prm, resume);
             }
           ProblemBase<dim> problem(parameters, *scene, log);
           return problem.run(prm, resume);
@@ -98,6 +114,9 @@ namespace rsfcycle
 
         const Parameters           &parameters;
         std::unique_ptr<Scene<dim>> scene;
+        /** The log of the green-function model, set by run(). */
+        std::ostream                             fault_log{nullptr};
+        std::unique_ptr<models::GreenFault<dim>> fault;
       };
 
 

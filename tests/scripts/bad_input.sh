@@ -116,6 +116,10 @@ check_bp1 green-quasi-static "Dynamics = quasi-dynamic" 'subsection Solver\nset 
 check_bp1 green-integrator "Integrator = runge-kutta" 'subsection Time stepping\nset Integrator = implicit\nend'
 check_bp1 green-viscosity "shear viscosity" 'subsection Mesh file\nset Materials = 10: density 1335, bulk modulus 26.69843e9, Poisson ratio 0.25, shear viscosity 1e12, bulk viscosity 0\nend'
 check_bp1 green-ramp "Ramp time" 'subsection Mesh file\nset Ramp time = 3e7\nend'
+# (these two need the assembled matrices: refused after the set-up, still
+# before the run folder is touched)
+check_bp1 green-cohesion "Cohesion = 0" 'subsection Mesh file\nsubsection Friction\nset Cohesion = 1e5\nend\nend'
+check_bp1 green-dashpots "dashpots" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: load, 3: free, 4: absorbing, 5: load\nend'
 check green-gravity "Normal stress" 'subsection Solver\nset Dynamics = quasi-dynamic\nset Bulk = green-function\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend'
 check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset Integrator = runge-kutta\nend'
 

@@ -8,7 +8,8 @@
 # checkpoint holds everything the time loop carries. Also checks that
 # SIGINT stops a run with exit code 130 and a resumable folder. The same
 # for the spring-slider, which runs through the same simulator,
-# with step doubling and with local extrapolation.
+# with step doubling and with local extrapolation, and for SEAS BP1-QD with
+# Solver/Bulk = green-function (the Runge-Kutta on the fault).
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -60,6 +61,29 @@ make_slider_le_prm() {
   make_slider_prm "$1"
   printf 'subsection Time stepping\n  set Controller = local-extrapolation\nend\n' >> "$1.prm"
 }
+# SEAS BP1-QD at 200 m with Solver/Bulk = green-function through its
+# first event (about 2,900 Runge-Kutta steps, each a sample): the
+# checkpoint holds the fault's state and ARKODE's step; the operator is
+# read back from the run folder's green-operator.bin on resume
+make_green_prm() {
+  cat > "$1.prm" <<PRM
+include $src/prm/seas-bp1-qd.prm
+set End time = 6.3e9
+set Output directory = $1
+subsection Mesh
+  set Local refinements = 3
+end
+subsection Solver
+  set Bulk = green-function
+end
+subsection Time stepping
+  set Integrator = runge-kutta
+end
+subsection Output
+  set Checkpoint steps = 200
+end
+PRM
+}
 fail() { echo "FAILED: $*"; exit 1; }
 # start run $1 in the background (pid in $pid) and wait until it has
 # written a checkpoint and 120 rows
@@ -103,3 +127,4 @@ check_resume() { # label, prm maker
 check_resume wedge make_wedge_prm
 check_resume slider make_slider_prm
 check_resume slider-local-extrapolation make_slider_le_prm
+check_resume green-function make_green_prm

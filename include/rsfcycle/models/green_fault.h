@@ -1,6 +1,7 @@
 #ifndef rsfcycle_models_green_fault_h
 #define rsfcycle_models_green_fault_h
 
+#include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <ostream>
@@ -74,11 +75,22 @@ namespace rsfcycle
                  const physics::Scene<dim> &scene,
                  std::ostream              &log);
 
-      /** Mesh, matrices, contact, the operator, the initial state. */
+      /**
+       * Mesh, matrices, contact, the operator, the initial state. The
+       * operator is read from the run folder's green-operator.bin on
+       * `resume`, else from `Solver/Green operator file` if it names one,
+       * else computed; a file that does not fit is refused
+       * (std::invalid_argument, one line). Nothing is written.
+       */
       void
-      setup();
+      setup(bool resume = false);
 
-      /** setup() and the run (or its resume); false if interrupted. */
+      /**
+       * The run (or its resume), after setup() (called here if it was
+       * not): writes parameters.prm and, unless it was read from there,
+       * the operator to the run folder's green-operator.bin. False if
+       * interrupted.
+       */
       bool
       run(const ParameterHandler &prm, bool resume = false);
 
@@ -150,6 +162,10 @@ namespace rsfcycle
       physics::ContactQuadrature<dim> contact;
       physics::GreenOperator          op;
       double                          setup_seconds = 0;
+      bool                            is_set_up     = false;
+      /** The file the operator was read from; empty if computed. */
+      std::string   operator_source;
+      std::uint32_t fingerprint = 0;
       /** Per node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
       State               initial;

@@ -1,11 +1,13 @@
 #ifndef rsfcycle_physics_green_operator_h
 #define rsfcycle_physics_green_operator_h
 
+#include <cstdint>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/spatial_problem.h>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -75,6 +77,54 @@ namespace rsfcycle
                            const solvers::ContactSet         &contact,
                            const std::vector<ObservationRow> &observations,
                            unsigned int                       block_size = 64);
+
+    /**
+     * A CRC32 of everything the operator depends on: the assembled
+     * stiffness, the fixed dofs and their prescribed velocity, the body
+     * force and prestress, the contact's dofs and the observation rows.
+     * Two runs with the same value have the same operator (the same mesh,
+     * material, boundary roles, loads and observation points); the
+     * friction, the normal stress and the radiation damping do not enter.
+     */
+    template <int dim>
+    std::uint32_t
+    operator_fingerprint(const Discretisation<dim>         &discretisation,
+                         const solvers::ContactSet         &contact,
+                         const std::vector<ObservationRow> &observations);
+
+    /**
+     * The format of the operator file. Increase it whenever its layout
+     * changes: a file of another format is refused, never misread.
+     */
+    constexpr std::uint32_t green_operator_format = 1;
+
+    /**
+     * Write `file` (green-operator.bin in a run folder): a header (magic
+     * "rsfgreen", format, fingerprint, the sizes n_dofs, n_c, n_o, CRC32 of
+     * the payload and of the header) and the payload (S, g0, g1, O, o0, o1
+     * as doubles, row by row). Written to file.tmp and renamed: the file is
+     * either complete or absent. A failed write is a std::runtime_error
+     * naming the file.
+     */
+    void
+    write_green_operator(const std::string   &file,
+                         const GreenOperator &op,
+                         std::uint32_t        fingerprint,
+                         std::uint64_t        n_dofs);
+
+    /**
+     * Read `file` and check it against this run: a missing, truncated or
+     * damaged (checksum) file, another format, or one written for another
+     * mesh, material or load (sizes, fingerprint) is an
+     * std::invalid_argument of one line, "what: file: what is wrong".
+     */
+    GreenOperator
+    read_green_operator(const std::string &file,
+                        const std::string &what,
+                        std::uint32_t      fingerprint,
+                        std::uint64_t      n_dofs,
+                        unsigned int       n_contact,
+                        unsigned int       n_observations);
   } // namespace physics
 } // namespace rsfcycle
 

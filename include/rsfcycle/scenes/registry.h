@@ -59,6 +59,17 @@ namespace rsfcycle
       virtual ~Simulation() = default;
 
       /**
+       * The set-up that may still refuse the input because it needs MPI,
+       * the mesh or an input file (the Green's-function operator, computed
+       * or read), after MPI has started and before the run folder is
+       * touched: what it refuses leaves nothing written. `resume`: the run
+       * will continue from its run folder.
+       */
+      virtual void
+      prepare(bool /*resume*/)
+      {}
+
+      /**
        * Run the scene (or resume it from the checkpoint in its run folder),
        * writing into the run folder and to log. Returns false if the run
        * was interrupted by SIGINT/SIGTERM.

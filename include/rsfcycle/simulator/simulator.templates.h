@@ -9,6 +9,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <cctype>
 #include <iomanip>
 #include <rsfcycle/output/checkpoint.h>
 #include <rsfcycle/output/files.h>
@@ -433,10 +434,14 @@ namespace rsfcycle
         << " v0, events = " << s.events.n_started() << ", wall "
         << internal::format_duration(elapsed) << ", ETA "
         << internal::format_duration(eta) << "\n"
-        << "    solver: " << counts.fixed_point_iterations << " fixed-point, "
-        << counts.tnnmg_iterations << " TNNMG, " << counts.linear_iterations
-        << " linear iterations; " << integrator->n_spatial_problems()
-        << " spatial problems this step" << std::endl;
+        << "    solver: ";
+    // (an explicit integrator iterates nothing: only its work is shown)
+    if (counts.fixed_point_iterations > 0)
+      log << counts.fixed_point_iterations << " fixed-point, "
+          << counts.tnnmg_iterations << " TNNMG, " << counts.linear_iterations
+          << " linear iterations; ";
+    log << integrator->n_spatial_problems() << " " << integrator->work_unit()
+        << " this step" << std::endl;
     for (const auto &writer : writers)
       writer->flush();
   }
@@ -451,18 +456,21 @@ namespace rsfcycle
     for (const auto &writer : writers)
       writer->finish(record(last_sample));
 
-    log << "Summary: " << s.step << " steps, " << s.total_problems
-        << " spatial problems, " << s.events.n_started()
-        << " events, step size " << s.min_dt << " s to " << s.max_dt
-        << " s, max fixed-point iterations " << s.max_fixed_point << std::endl;
+    std::string unit = integrator->work_unit();
+    log << "Summary: " << s.step << " steps, " << s.total_problems << " "
+        << unit << ", " << s.events.n_started() << " events, step size "
+        << s.min_dt << " s to " << s.max_dt << " s, max fixed-point iterations "
+        << s.max_fixed_point << std::endl;
     std::ostringstream events;
     s.events.write_summary(events,
                            parameters.output.transition_time,
                            parameters.output.transition_events);
     log << events.str();
     std::ostringstream summary;
-    summary << "Steps: " << s.step << "\nSpatial problems: " << s.total_problems
-            << "\nStep size: " << s.min_dt << " s to " << s.max_dt
+    unit[0] = std::toupper(unit[0]);
+    summary << "Steps: " << s.step << "\n"
+            << unit << ": " << s.total_problems << "\nStep size: " << s.min_dt
+            << " s to " << s.max_dt
             << " s\nMax fixed-point iterations per step: " << s.max_fixed_point
             << "\n"
             << events.str();

@@ -126,6 +126,12 @@ namespace rsfcycle
         return internal_steps;
       }
 
+      std::string
+      work_unit() const override
+      {
+        return "internal steps";
+      }
+
       IntegratorMemory<State>
       memory() const override
       {

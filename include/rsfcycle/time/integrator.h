@@ -73,6 +73,13 @@ namespace rsfcycle
       virtual unsigned int
       n_spatial_problems() const = 0;
 
+      /** What n_spatial_problems() counts, in the progress line. */
+      virtual std::string
+      work_unit() const
+      {
+        return "spatial problems";
+      }
+
       /**
        * Everything the next advance() depends on: a checkpoint stores it so
        * that a resumed run repeats the uninterrupted one exactly.

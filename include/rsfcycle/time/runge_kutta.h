@@ -74,19 +74,40 @@ namespace rsfcycle
       {
         if (arkode == nullptr)
           start(current, t);
-        ARKStepSetStopTime(arkode, end_time);
-        long int stages_before = 0, steps_before = 0;
-        ARKStepGetNumSteps(arkode, &steps_before);
-        long int dummy = 0;
-        ARKStepGetNumRhsEvals(arkode, &stages_before, &dummy);
-        double    t_reached = t;
-        const int flag =
-          ARKStepEvolve(arkode, end_time, y, &t_reached, ARK_ONE_STEP);
-        if (failure)
+        // (a fresh start evaluates the right-hand side once more, at t:
+        // not counted, so that a resumed run writes the same counts)
+        rhs_evaluations  = fresh ? -1 : 0;
+        fresh            = false;
+        double t_reached = t;
+        int    flag      = 0;
+        for (unsigned int restarts = 0;; ++restarts)
           {
-            const std::exception_ptr e = failure;
-            failure                    = nullptr;
-            std::rethrow_exception(e);
+            ARKStepSetStopTime(arkode, end_time);
+            long int stages_before = 0, stages = 0, dummy = 0;
+            ARKStepGetNumRhsEvals(arkode, &stages_before, &dummy);
+            flag = ARKStepEvolve(arkode, end_time, y, &t_reached, ARK_ONE_STEP);
+            ARKStepGetNumRhsEvals(arkode, &stages, &dummy);
+            rhs_evaluations += stages - stages_before;
+            if (failure)
+              {
+                const std::exception_ptr e = failure;
+                failure                    = nullptr;
+                std::rethrow_exception(e);
+              }
+            // A stage outside the region where the right-hand side is
+            // finite (the model returned 1: a step far too large at the
+            // onset of an event) ends ARKStep's step; restart from the last
+            // accepted state with a tenth of the step, a few times.
+            if (flag != ARK_UNREC_RHSFUNC_ERR || restarts == max_restarts)
+              break;
+            double attempted = next_step;
+            ARKStepGetCurrentStep(arkode, &attempted);
+            next_step = std::max(parameters.minimum_step,
+                                 0.1 * std::min(attempted, next_step));
+            start(current, t);
+            --rhs_evaluations; // (its evaluation at t, as above)
+            fresh     = false;
+            t_reached = t;
           }
         if (flag < 0)
           {
@@ -99,9 +120,6 @@ namespace rsfcycle
               "): the ODE is too stiff for an explicit method here; "
               "Solver/Bulk = volume (the implicit step) is the way out");
           }
-        long int stages = 0;
-        ARKStepGetNumRhsEvals(arkode, &stages, &dummy);
-        rhs_evaluations = stages - stages_before;
         ARKStepGetCurrentStep(arkode, &next_step);
         last_step = t_reached - t;
         t         = t_reached;
@@ -125,6 +143,12 @@ namespace rsfcycle
       n_spatial_problems() const override
       {
         return rhs_evaluations;
+      }
+
+      std::string
+      work_unit() const override
+      {
+        return "right-hand sides";
       }
 
       IntegratorMemory<State>
@@ -154,6 +178,9 @@ namespace rsfcycle
       {
         const Vector y0 = model.to_ode(current);
         const Vector a  = model.ode_absolute_tolerances(parameters.tolerance);
+        if (arkode != nullptr)
+          ARKStepFree(&arkode);
+        fresh = true;
         if (y != nullptr)
           N_VDestroy(y);
         if (tolerances != nullptr)
@@ -179,6 +206,13 @@ namespace rsfcycle
         ARKStepSetMinStep(arkode, parameters.minimum_step);
         ARKStepSetMaxStep(arkode, parameters.maximum_step);
         ARKStepSetMaxErrTestFails(arkode, 20);
+        // A step size control without memory (the I controller, and the
+        // first step's growth limited like every other's): the step after
+        // a restart (resume, or the retry above) is the step the
+        // uninterrupted run takes, so that a resumed run repeats it
+        // exactly.
+        ARKStepSetAdaptivityMethod(arkode, 2, 1, 0, nullptr);
+        ARKStepSetMaxFirstGrowth(arkode, 20.);
       }
 
       /** The current unknowns as a deal.II vector. */
@@ -223,7 +257,10 @@ namespace rsfcycle
       std::exception_ptr            failure;
       double                        next_step       = 0;
       double                        last_step       = 0;
-      unsigned int                  rhs_evaluations = 0;
+      int                           rhs_evaluations = 0;
+      bool                          fresh           = false;
+      /** Restarts of one advance() after a non-finite right-hand side. */
+      static constexpr unsigned int max_restarts = 8;
     };
   } // namespace time
 } // namespace rsfcycle

@@ -53,4 +53,10 @@ subsection Solver
   set Bulk = green-function
 end'
 if [ "$which" = green ] || [ "$which" = both ]; then run green "$green"; fi
-if [ "$which" = volume ] || [ "$which" = both ]; then run volume ""; fi
+volume='subsection Time stepping
+  set Integrator = implicit
+end
+subsection Solver
+  set Bulk = volume
+end'
+if [ "$which" = volume ] || [ "$which" = both ]; then run volume "$volume"; fi

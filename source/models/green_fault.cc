@@ -177,7 +177,6 @@ namespace rsfcycle
                  initial.alpha.data(),
                  0.,
                  initial.rate.data());
-      slip_work.reinit(nodes.size());
       force_work.reinit(nodes.size());
       setup_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -244,9 +243,9 @@ namespace rsfcycle
                                 const double  t,
                                 double       *V) const
     {
-      const unsigned int     n = damping.size();
-      dealii::Vector<double> slip(s, s + n), force(n);
-      op.S.vmult(force, slip);
+      const unsigned int  n = damping.size();
+      std::vector<double> force(n);
+      op.apply(s, force.data());
       for (unsigned int k = 0; k < n; ++k)
         V[k] = slip_rate(k, op.g0[k] + t * op.g1[k] - force[k], alpha[k]);
     }
@@ -259,8 +258,7 @@ namespace rsfcycle
       TimerOutput::Scope scope(timer, "Fault right-hand side");
       const unsigned int n   = damping.size();
       const auto        &law = *parameters.solver.law;
-      std::copy(y.begin(), y.begin() + n, slip_work.begin());
-      op.S.vmult(force_work, slip_work);
+      op.apply(y.begin(), force_work.begin());
       bool finite = true;
       for (unsigned int k = 0; k < n; ++k)
         {

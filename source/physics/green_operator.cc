@@ -231,6 +231,22 @@ namespace rsfcycle
     }
 
 
+    void
+    GreenOperator::apply(const double *slip, double *force) const
+    {
+      const unsigned int n = S.n();
+      for (unsigned int r = 0; r < S.m(); ++r)
+        {
+          const double *row = &S(r, 0);
+          double        sum = 0;
+#pragma omp simd reduction(+ : sum)
+          for (unsigned int j = 0; j < n; ++j)
+            sum += row[j] * slip[j];
+          force[r] = sum;
+        }
+    }
+
+
     template <int dim>
     std::uint32_t
     operator_fingerprint(const Discretisation<dim>         &discretisation,

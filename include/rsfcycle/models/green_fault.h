@@ -169,7 +169,7 @@ namespace rsfcycle
       /** Per node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
       State               initial;
-      mutable Vector      slip_work, force_work;
+      mutable Vector      force_work;
     };
   } // namespace models
 } // namespace rsfcycle

@@ -46,6 +46,14 @@ namespace rsfcycle
       dealii::Vector<double>     o1; // [m/s]
       unsigned int               n_interior = 0;
       unsigned int               n_blocks   = 0; // multi-RHS solves
+
+      /**
+       * force = S slip, each row a vectorised dot product (3 - 8 times
+       * FullMatrix::vmult, whose one running sum serialises the adds;
+       * benchmarks/green-function/README.md).
+       */
+      void
+      apply(const double *slip, double *force) const;
     };
 
     /**

@@ -16,8 +16,8 @@ fi
 jobs=${JOBS:-2}
 
 # 1. Debian packages (only if one is missing; needs root).
-packages=(libdeal.ii-dev libsuitesparse-dev openmpi-bin cmake g++ make numdiff
-  python3-matplotlib python3-numpy clang-format-14 git)
+packages=(libdeal.ii-dev libsuitesparse-dev libhmat-oss-dev openmpi-bin cmake g++
+  make numdiff python3-matplotlib python3-numpy clang-format-14 git)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)

@@ -35,6 +35,9 @@ namespace rsfcycle
   template <>
   const std::vector<std::string> Choice<SolverParameters::Bulk>::names =
     {"volume", "green-function"};
+  template <>
+  const std::vector<std::string> Choice<SolverParameters::GreenStorage>::names =
+    {"automatic", "dense", "h-matrix"};
 
 
   template <typename Enum>
@@ -74,6 +77,7 @@ namespace rsfcycle
   template struct Choice<SolverParameters::Dynamics>;
   template struct Choice<SolverParameters::LinearCorrection>;
   template struct Choice<SolverParameters::Bulk>;
+  template struct Choice<SolverParameters::GreenStorage>;
 
 
   void
@@ -367,6 +371,27 @@ namespace rsfcycle
       "written. Empty: compute the operator (every run writes it to its "
       "run folder)");
     prm.declare_entry(
+      "Green operator storage",
+      "automatic",
+      Selection(Choice<GreenStorage>::pattern()),
+      "Solver/Bulk = green-function: how the operator S (n x n for n "
+      "contact nodes) is kept and applied at every right-hand side. dense: "
+      "n^2 numbers, a vectorised product; h-matrix: compressed as a "
+      "hierarchical matrix (hmat-oss, ACA+) to Green compression "
+      "tolerance, storage and product about n log n (at 1600 nodes: 6 % of "
+      "the numbers and a third of the product's time); automatic: h-matrix "
+      "from 1000 contact nodes on, dense below (where compression gains "
+      "nothing). The operator file holds the dense S either way");
+    prm.declare_entry(
+      "Green compression tolerance",
+      "1e-6",
+      Double(1e-14, 1e-1),
+      "Solver/Bulk = green-function with an H-matrix: the relative "
+      "tolerance [-] of the low-rank blocks (ACA+ and its recompression); "
+      "the product's relative error is of this order or below (the run's "
+      "log reports it for two test slips). 1e-6 changes BP1-QD's event "
+      "times by less than 1e-4 relative (benchmarks/green-function)");
+    prm.declare_entry(
       "Theta",
       "0.5",
       Double(0.5, 1),
@@ -453,15 +478,18 @@ namespace rsfcycle
   SolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    law                   = friction::make_law(prm.get("State law"));
-    time_scheme           = prm.get("Time scheme");
-    coupling              = Choice<Coupling>::parse(prm.get("Coupling"));
-    dynamics              = Choice<Dynamics>::parse(prm.get("Dynamics"));
-    bulk                  = Choice<Bulk>::parse(prm.get("Bulk"));
-    green_operator_file   = prm.get("Green operator file");
-    theta                 = prm.get_double("Theta");
-    spectral_radius       = prm.get_double("Spectral radius");
-    fixed_point_tolerance = prm.get_double("Fixed-point tolerance");
+    law                 = friction::make_law(prm.get("State law"));
+    time_scheme         = prm.get("Time scheme");
+    coupling            = Choice<Coupling>::parse(prm.get("Coupling"));
+    dynamics            = Choice<Dynamics>::parse(prm.get("Dynamics"));
+    bulk                = Choice<Bulk>::parse(prm.get("Bulk"));
+    green_operator_file = prm.get("Green operator file");
+    green_storage =
+      Choice<GreenStorage>::parse(prm.get("Green operator storage"));
+    green_compression_tolerance = prm.get_double("Green compression tolerance");
+    theta                       = prm.get_double("Theta");
+    spectral_radius             = prm.get_double("Spectral radius");
+    fixed_point_tolerance       = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");
     linear_correction =

@@ -160,6 +160,13 @@ namespace rsfcycle
       volume,
       green_function
     };
+    /** How the Green's-function operator S is stored and applied. */
+    enum class GreenStorage
+    {
+      automatic,
+      dense,
+      h_matrix
+    };
 
     /** The friction law of `State law` (friction/laws.h). */
     std::shared_ptr<const friction::Law> law = friction::make_law("ageing");
@@ -170,7 +177,10 @@ namespace rsfcycle
      * `Green operator file`: the operator of an earlier green-function run
      * to reuse (absolute after parsing), or empty to compute it.
      */
-    std::string green_operator_file;
+    std::string  green_operator_file;
+    GreenStorage green_storage = GreenStorage::automatic;
+    /** Relative tolerance of the H-matrix compression (ACA+). */
+    double green_compression_tolerance = 1e-6;
     /** The time scheme's name; time/schemes.h makes it. */
     std::string time_scheme = "theta";
     double      theta       = 0.5;

@@ -156,6 +156,26 @@ namespace rsfcycle
                                          observations.size());
       }
 
+      // S as an H-matrix: asked for, or automatic from 1000 contact nodes
+      // on (below, compression gains nothing: benchmarks/green-function)
+      {
+        using Storage      = SolverParameters::GreenStorage;
+        const auto storage = parameters.solver.green_storage;
+        if (storage == Storage::h_matrix ||
+            (storage == Storage::automatic && nodes.size() >= 1000))
+          {
+            TimerOutput::Scope  scope(timer, "Green's function compression");
+            std::vector<double> points;
+            for (const auto &node : contact.nodes())
+              for (unsigned int d = 0; d < dim; ++d)
+                points.push_back(node.position[d]);
+            compression_error =
+              op.compress(points,
+                          dim,
+                          parameters.solver.green_compression_tolerance);
+          }
+      }
+
       // The initial slip is the volume path's: the tangential displacement
       // of the gravity equilibrium on a frictionless contact (zero without
       // gravity); the traction is then the shear prestress alone.
@@ -386,8 +406,19 @@ namespace rsfcycle
           << tria.n_global_levels() << " levels, "
           << discretisation.dof_handler.n_dofs() << " unknowns, "
           << contact.n_global_nodes() << " contact nodes\n"
-          << "Bulk: green-function, dense operator " << op.S.m() << " x "
-          << op.S.n() << " and " << op.O.m() << " observation rows ";
+          << "Bulk: green-function, operator " << op.n_contact() << " x "
+          << op.n_contact();
+      if (op.compressed)
+        log << " as an H-matrix (tolerance "
+            << parameters.solver.green_compression_tolerance << ": "
+            << format_number(100. * op.compressed->stored_entries() /
+                             (double(op.n_contact()) * op.n_contact()))
+            << " % of the dense numbers, " << op.compressed->n_low_rank_blocks()
+            << " low-rank and " << op.compressed->n_dense_blocks()
+            << " dense blocks, product error " << compression_error << ")";
+      else
+        log << " dense";
+      log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())
         log << "from a Cholesky factor of " << op.n_interior << " unknowns and "
             << op.n_blocks << " block solves";
@@ -417,6 +448,8 @@ namespace rsfcycle
                                         fingerprint,
                                         discretisation.dof_handler.n_dofs());
         }
+      if (op.compressed)
+        op.release_dense();
       Simulator<State> simulator(parameters, *this, log, timer);
       return !simulator.run(resume).interrupted;
     }

@@ -2,6 +2,7 @@
 // (physics/green_operator.h, MODEL.md §8.1).
 #include <algorithm>
 #include <boost/crc.hpp>
+#include <cmath>
 #include <cstring>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -234,6 +235,8 @@ namespace rsfcycle
     void
     GreenOperator::apply(const double *slip, double *force) const
     {
+      if (compressed)
+        return compressed->vmult(slip, force);
       const unsigned int n = S.n();
       for (unsigned int r = 0; r < S.m(); ++r)
         {
@@ -244,6 +247,53 @@ namespace rsfcycle
             sum += row[j] * slip[j];
           force[r] = sum;
         }
+    }
+
+
+    double
+    GreenOperator::compress(const std::vector<double> &points,
+                            const unsigned int         dim,
+                            const double               tolerance)
+    {
+      compressed = std::make_shared<const solvers::HierarchicalMatrix>(
+        S, points, dim, tolerance);
+      const unsigned int  n = S.m();
+      std::vector<double> x(n), dense(n), h(n);
+      double              error = 0;
+      for (unsigned int test = 0; test < 2; ++test)
+        {
+          // a uniform slip; a reproducible pseudo-random one in [-1, 1]
+          std::uint32_t seed = 12345;
+          for (auto &xi : x)
+            {
+              seed = 1664525u * seed + 1013904223u;
+              xi   = test == 0 ? 1. : seed / 2147483648. - 1.;
+            }
+          for (unsigned int r = 0; r < n; ++r)
+            {
+              dense[r] = 0;
+              for (unsigned int j = 0; j < n; ++j)
+                dense[r] += S(r, j) * x[j];
+            }
+          compressed->vmult(x.data(), h.data());
+          double diff = 0, norm = 0;
+          for (unsigned int r = 0; r < n; ++r)
+            {
+              diff += (h[r] - dense[r]) * (h[r] - dense[r]);
+              norm += dense[r] * dense[r];
+            }
+          error = std::max(error, std::sqrt(diff / norm));
+        }
+      return error;
+    }
+
+
+    void
+    GreenOperator::release_dense()
+    {
+      if (!compressed)
+        throw std::logic_error("release_dense() before compress()");
+      S = dealii::FullMatrix<double>();
     }
 
 

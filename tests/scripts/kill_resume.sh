@@ -64,7 +64,9 @@ make_slider_le_prm() {
 # SEAS BP1-QD at 200 m with Solver/Bulk = green-function through its
 # first event (about 2,900 Runge-Kutta steps, each a sample): the
 # checkpoint holds the fault's state and ARKODE's step; the operator is
-# read back from the run folder's green-operator.bin on resume
+# read back from the run folder's green-operator.bin on resume and
+# compressed again as an H-matrix (the same one: the product, and so every
+# output, must come out bitwise the same)
 make_green_prm() {
   cat > "$1.prm" <<PRM
 include $src/prm/seas-bp1-qd.prm
@@ -75,6 +77,7 @@ subsection Mesh
 end
 subsection Solver
   set Bulk = green-function
+  set Green operator storage = h-matrix
 end
 subsection Time stepping
   set Integrator = runge-kutta

@@ -166,6 +166,8 @@ namespace rsfcycle
       /** The file the operator was read from; empty if computed. */
       std::string   operator_source;
       std::uint32_t fingerprint = 0;
+      /** The H-matrix product's relative error on two test slips. */
+      double compression_error = 0;
       /** Per node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
       State               initial;

@@ -4,8 +4,10 @@
 #include <cstdint>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <memory>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/scene.h>
+#include <rsfcycle/solvers/hierarchical_matrix.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <string>
 #include <utility>
@@ -34,7 +36,9 @@ namespace rsfcycle
      *   u_p(s, t) = o0 + t o1 + O s,   O = P_c - P_I K_II^-1 K_Ic.
      * Everything is computed from the assembled stiffness with one sparse
      * Cholesky factor of K_II (CHOLMOD) and one solve per contact node, the
-     * right-hand sides `block_size` at a time. Dense storage, one MPI rank.
+     * right-hand sides `block_size` at a time, one MPI rank. S is kept
+     * dense or, after compress(), as an H-matrix (solvers::
+     * HierarchicalMatrix).
      */
     struct GreenOperator
     {
@@ -46,14 +50,39 @@ namespace rsfcycle
       dealii::Vector<double>     o1; // [m/s]
       unsigned int               n_interior = 0;
       unsigned int               n_blocks   = 0; // multi-RHS solves
+      /** S as an H-matrix, once compress() has run; apply() then uses it. */
+      std::shared_ptr<const solvers::HierarchicalMatrix> compressed;
+
+      unsigned int
+      n_contact() const
+      {
+        return g0.size();
+      }
 
       /**
-       * force = S slip, each row a vectorised dot product (3 - 8 times
-       * FullMatrix::vmult, whose one running sum serialises the adds;
+       * force = S slip: the H-matrix's product if S is compressed, else
+       * each row a vectorised dot product (3 - 8 times FullMatrix::vmult,
+       * whose one running sum serialises the adds;
        * benchmarks/green-function/README.md).
        */
       void
       apply(const double *slip, double *force) const;
+
+      /**
+       * Compress S as an H-matrix of relative tolerance `tolerance`, row k
+       * at the point (points[dim k], ...), and return the largest relative
+       * error (2-norm) of the compressed product against the dense one for
+       * two test slips (uniform, and pseudo-random). S stays until
+       * release_dense().
+       */
+      double
+      compress(const std::vector<double> &points,
+               unsigned int               dim,
+               double                     tolerance);
+
+      /** Free the dense S once it is compressed and written. */
+      void
+      release_dense();
     };
 
     /**

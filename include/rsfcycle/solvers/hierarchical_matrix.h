@@ -1,0 +1,69 @@
+#ifndef rsfcycle_solvers_hierarchical_matrix_h
+#define rsfcycle_solvers_hierarchical_matrix_h
+
+#include <cstddef>
+#include <deal.II/lac/full_matrix.h>
+#include <memory>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    /**
+     * A symmetric dense matrix whose rows and columns belong to points in
+     * space (a fault operator: row k is the force at node k per unit slip
+     * of every node), compressed as a hierarchical matrix by hmat-oss
+     * (Debian libhmat-oss-dev): the points are clustered by median splits
+     * down to `leaf_size` points, a block of two clusters whose distance is
+     * at least their smaller diameter / eta is stored in low rank (ACA+
+     * with partial pivoting, then recompressed, both to the relative
+     * tolerance), the others dense; only the lower triangle is stored.
+     * For an operator that decays with distance the storage and the cost of
+     * a product grow like n log n instead of n^2.
+     */
+    class HierarchicalMatrix
+    {
+    public:
+      /**
+       * Compress the symmetric n x n matrix A whose row k belongs to the
+       * point (points[dim k], ..., points[dim k + dim - 1]). The entries are
+       * read through A(i, j), i >= j; A is not kept. Throws
+       * std::runtime_error if hmat-oss fails.
+       */
+      HierarchicalMatrix(const dealii::FullMatrix<double> &A,
+                         const std::vector<double>        &points,
+                         unsigned int                      dim,
+                         double                            tolerance,
+                         unsigned int                      leaf_size = 32,
+                         double                            eta       = 2.);
+      ~HierarchicalMatrix();
+      HierarchicalMatrix(const HierarchicalMatrix &) = delete;
+      HierarchicalMatrix &
+      operator=(const HierarchicalMatrix &) = delete;
+
+      /** y = A x (x and y of length n, in the points' order). */
+      void
+      vmult(const double *x, double *y) const;
+
+      unsigned int
+      n() const;
+
+      /** Numbers stored (the low-rank factors and dense blocks). */
+      std::size_t
+      stored_entries() const;
+
+      /** Low-rank blocks and dense blocks of the block tree. */
+      std::size_t
+      n_low_rank_blocks() const;
+      std::size_t
+      n_dense_blocks() const;
+
+    private:
+      struct Data;
+      std::unique_ptr<Data> data;
+    };
+  } // namespace solvers
+} // namespace rsfcycle
+
+#endif

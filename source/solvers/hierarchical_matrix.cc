@@ -1,0 +1,167 @@
+// A symmetric matrix compressed by hmat-oss (solvers/hierarchical_matrix.h).
+#include <hmat/hmat.h>
+#include <rsfcycle/solvers/hierarchical_matrix.h>
+#include <stdexcept>
+#include <string>
+
+namespace rsfcycle
+{
+  namespace solvers
+  {
+    namespace
+    {
+      // hmat-oss's double-precision interface, initialised once
+      hmat_interface_t &
+      interface()
+      {
+        static hmat_interface_t hmat = [] {
+          hmat_interface_t h;
+          hmat_init_default_interface(&h, HMAT_DOUBLE_PRECISION);
+          if (h.init() != 0)
+            throw std::runtime_error("hmat-oss: initialisation failed");
+          return h;
+        }();
+        return hmat;
+      }
+
+      // the entry callback of the assembly: A(i, j) in the original order
+      void
+      entry(void *context, const int i, const int j, void *result)
+      {
+        *static_cast<double *>(result) =
+          (*static_cast<const dealii::FullMatrix<double> *>(context))(i, j);
+      }
+    } // namespace
+
+
+    struct HierarchicalMatrix::Data
+    {
+      hmat_cluster_tree_t *tree   = nullptr;
+      hmat_matrix_t       *matrix = nullptr;
+      // the clustering's order: position k holds original index order[k]
+      const int  *order = nullptr;
+      hmat_info_t info;
+      // x and y in the clustering's order (the product is not const in
+      // hmat-oss's interface)
+      mutable std::vector<double> x, y;
+    };
+
+
+    HierarchicalMatrix::HierarchicalMatrix(const dealii::FullMatrix<double> &A,
+                                           const std::vector<double> &points,
+                                           const unsigned int         dim,
+                                           const double               tolerance,
+                                           const unsigned int         leaf_size,
+                                           const double               eta)
+      : data(std::make_unique<Data>())
+    {
+      auto      &hmat = interface();
+      const int  n    = A.m();
+      const auto fail = [](const std::string &what) {
+        return std::runtime_error("hmat-oss: " + what + " failed");
+      };
+      if (A.n() != A.m() || points.size() != dim * A.m())
+        throw std::invalid_argument(
+          "HierarchicalMatrix: a square matrix and one point per row");
+
+      hmat_clustering_algorithm_t *median = hmat_create_clustering_median();
+      hmat_clustering_algorithm_t *algorithm =
+        hmat_create_clustering_max_dof(median, leaf_size);
+      data->tree = hmat_create_cluster_tree(const_cast<double *>(points.data()),
+                                            dim,
+                                            n,
+                                            algorithm);
+      hmat_delete_clustering(algorithm);
+      hmat_delete_clustering(median);
+      if (data->tree == nullptr)
+        throw fail("clustering");
+      data->order = hmat_cluster_get_indices(data->tree);
+
+      hmat_admissibility_t *admissibility =
+        hmat_create_admissibility_standard(eta);
+      data->matrix = hmat.create_empty_hmatrix_admissibility(data->tree,
+                                                             data->tree,
+                                                             1,
+                                                             admissibility);
+      hmat_delete_admissibility(admissibility);
+      if (data->matrix == nullptr)
+        throw fail("the block tree");
+      // the recompression after ACA+ truncates at 1e-4 unless told
+      hmat.set_low_rank_epsilon(data->matrix, tolerance);
+
+      hmat_assemble_context_t context;
+      hmat_assemble_context_init(&context);
+      context.compression     = hmat_create_compression_aca_plus(tolerance);
+      context.simple_compute  = entry;
+      context.user_context    = const_cast<dealii::FullMatrix<double> *>(&A);
+      context.lower_symmetric = 1;
+      context.progress        = nullptr;
+      const int error         = hmat.assemble_generic(data->matrix, &context);
+      hmat_delete_compression(context.compression);
+      if (error != 0)
+        throw fail("the assembly");
+      hmat.get_info(data->matrix, &data->info);
+      data->x.resize(n);
+      data->y.resize(n);
+    }
+
+
+    HierarchicalMatrix::~HierarchicalMatrix()
+    {
+      if (data->matrix != nullptr)
+        interface().destroy(data->matrix);
+      if (data->tree != nullptr)
+        hmat_delete_cluster_tree(data->tree);
+    }
+
+
+    void
+    HierarchicalMatrix::vmult(const double *x, double *y) const
+    {
+      const unsigned int n = data->x.size();
+      for (unsigned int k = 0; k < n; ++k)
+        data->x[k] = x[data->order[k]];
+      const double one = 1, zero = 0;
+      if (interface().gemm_dense('N',
+                                 'N',
+                                 'L',
+                                 &one,
+                                 data->matrix,
+                                 data->x.data(),
+                                 &zero,
+                                 data->y.data(),
+                                 1) != 0)
+        throw std::runtime_error("hmat-oss: the product failed");
+      for (unsigned int k = 0; k < n; ++k)
+        y[data->order[k]] = data->y[k];
+    }
+
+
+    unsigned int
+    HierarchicalMatrix::n() const
+    {
+      return data->x.size();
+    }
+
+
+    std::size_t
+    HierarchicalMatrix::stored_entries() const
+    {
+      return data->info.compressed_size;
+    }
+
+
+    std::size_t
+    HierarchicalMatrix::n_low_rank_blocks() const
+    {
+      return data->info.rk_count;
+    }
+
+
+    std::size_t
+    HierarchicalMatrix::n_dense_blocks() const
+    {
+      return data->info.full_count;
+    }
+  } // namespace solvers
+} // namespace rsfcycle

@@ -357,7 +357,7 @@ namespace rsfcycle
       "volume: the implicit step over the mesh (TNNMG); green-function: "
       "the fault's Green's functions from the mesh (MODEL.md 8.1) and the "
       "fault's ODE by Time stepping/Integrator = runge-kutta: quasi-dynamic, "
-      "elastic, prescribed normal stress, constant load, one MPI rank");
+      "elastic, prescribed normal stress, constant load");
     prm.declare_entry(
       "Green operator file",
       "",

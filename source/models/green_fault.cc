@@ -68,6 +68,7 @@ namespace rsfcycle
       , log(log)
       , timer(log, TimerOutput::never, TimerOutput::wall_times)
       , discretisation(parameters.mesh, scene, {parameters.run.antiplane, true})
+      , communicator(discretisation.triangulation.get_communicator())
     {
       check(parameters, scene);
     }
@@ -104,15 +105,17 @@ namespace rsfcycle
         on_contact[node.dofs[0]] = true;
       // (the rows and columns of fixed dofs do not enter: their values
       // are prescribed, and constrained rows carry a diagonal)
+      // (a refusal on one rank is made on every rank: the first rank's)
       const auto &fixed = discretisation.fixed;
+      std::string refusal;
       for (unsigned int i = 0; i < C.m(); ++i)
         for (unsigned int e = C.row_begin(i); e < C.row_end(i); ++e)
           if (C.value(e) != 0 && !fixed[i] && !fixed[C.column(e)] &&
               !(on_contact[i] && C.column(e) == i))
-            throw std::invalid_argument(
-              refused + "the bulk has dashpots (Boundary roles: absorbing) "
-                        "or viscosity; only radiation damping on the "
-                        "contact is allowed");
+            refusal = refused +
+                      "the bulk has dashpots (Boundary roles: absorbing) "
+                      "or viscosity; only radiation damping on the "
+                      "contact is allowed";
       damping.assign(nodes.size(), 0.);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
@@ -121,30 +124,33 @@ namespace rsfcycle
             if (C.column(e) == i)
               damping[k] = C.value(e);
           if (contact.nodes()[k].params.cohesion != 0)
-            throw std::invalid_argument(
-              refused + "needs Friction/Cohesion = 0 (the cohesion makes "
-                        "the fault's ODE non-smooth at V = 0)");
+            refusal = refused + "needs Friction/Cohesion = 0 (the cohesion "
+                                "makes the fault's ODE non-smooth at V = 0)";
           if (!(damping[k] > 0))
-            throw std::invalid_argument(
-              refused + "needs radiation damping > 0 on every contact node");
+            refusal =
+              refused + "needs radiation damping > 0 on every contact node";
         }
+      for (const auto &r : Utilities::MPI::all_gather(communicator, refusal))
+        if (!r.empty())
+          throw std::invalid_argument(r);
 
       {
         TimerOutput::Scope scope(timer, "Green's function operator");
-        const auto         observations =
+        // (the gathered system is the set-up's; it goes at the scope's end)
+        const auto system = physics::gather_system(
+          discretisation,
+          contact.contact_set(),
           physics::observation_rows(discretisation,
                                     scene,
-                                    parameters.run.antiplane);
-        fingerprint = physics::operator_fingerprint(discretisation,
-                                                    contact.contact_set(),
-                                                    observations);
+                                    parameters.run.antiplane));
+        fingerprint = physics::operator_fingerprint(system);
+        first =
+          system.rank_offsets[Utilities::MPI::this_mpi_process(communicator)];
         operator_source =
           resume ? parameters.run.output_directory + "/" + operator_file :
                    parameters.solver.green_operator_file;
         if (operator_source.empty())
-          op = physics::compute_green_operator(discretisation,
-                                               contact.contact_set(),
-                                               observations);
+          op = physics::compute_green_operator(system, communicator);
         else
           op =
             physics::read_green_operator(operator_source,
@@ -152,8 +158,11 @@ namespace rsfcycle
                                                   "Solver/Green operator file",
                                          fingerprint,
                                          discretisation.dof_handler.n_dofs(),
+                                         system.contact_dofs.size(),
+                                         system.observations.size(),
+                                         first,
                                          nodes.size(),
-                                         observations.size());
+                                         communicator);
       }
 
       // S as an H-matrix: asked for, or automatic from 1000 contact nodes
@@ -162,17 +171,18 @@ namespace rsfcycle
         using Storage      = SolverParameters::GreenStorage;
         const auto storage = parameters.solver.green_storage;
         if (storage == Storage::h_matrix ||
-            (storage == Storage::automatic && nodes.size() >= 1000))
+            (storage == Storage::automatic && op.n_contact() >= 1000))
           {
             TimerOutput::Scope  scope(timer, "Green's function compression");
             std::vector<double> points;
             for (const auto &node : contact.nodes())
               for (unsigned int d = 0; d < dim; ++d)
                 points.push_back(node.position[d]);
-            compression_error =
-              op.compress(points,
+            compression_error = Utilities::MPI::max(
+              op.compress(la::all_gather(communicator, points),
                           dim,
-                          parameters.solver.green_compression_tolerance);
+                          parameters.solver.green_compression_tolerance),
+              communicator);
           }
       }
 
@@ -180,19 +190,20 @@ namespace rsfcycle
       // of the gravity equilibrium on a frictionless contact (zero without
       // gravity); the traction is then the shear prestress alone.
       {
-        TimerOutput::Scope scope(timer, "Gravity equilibrium");
-        const auto         u = discretisation.gravity_equilibrium().first;
-        initial.slip.clear();
-        initial.alpha.clear();
+        TimerOutput::Scope  scope(timer, "Gravity equilibrium");
+        const auto          u = discretisation.gravity_equilibrium().first;
+        std::vector<double> slip, alpha;
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
-            initial.slip.push_back(u.local_element(nodes[k].dofs[0]));
-            initial.alpha.push_back(
-              scene.initial_state(contact.nodes()[k].position));
+            slip.push_back(u.local_element(nodes[k].dofs[0]));
+            alpha.push_back(scene.initial_state(contact.nodes()[k].position));
           }
+        // the state of all nodes on every rank, rank by rank
+        initial.slip  = la::all_gather(communicator, slip);
+        initial.alpha = la::all_gather(communicator, alpha);
       }
       initial.t = 0;
-      initial.rate.resize(nodes.size());
+      initial.rate.resize(initial.slip.size());
       slip_rates(initial.slip.data(),
                  initial.alpha.data(),
                  0.,
@@ -264,10 +275,13 @@ namespace rsfcycle
                                 double       *V) const
     {
       const unsigned int  n = damping.size();
-      std::vector<double> force(n);
+      std::vector<double> force(n), rates(n);
       op.apply(s, force.data());
       for (unsigned int k = 0; k < n; ++k)
-        V[k] = slip_rate(k, op.g0[k] + t * op.g1[k] - force[k], alpha[k]);
+        rates[k] =
+          slip_rate(k, op.g0[k] + t * op.g1[k] - force[k], alpha[first + k]);
+      const auto all = la::all_gather(communicator, rates);
+      std::copy(all.begin(), all.end(), V);
     }
 
 
@@ -276,18 +290,26 @@ namespace rsfcycle
     GreenFault<dim>::ode_rhs(const double t, const Vector &y, Vector &dy) const
     {
       TimerOutput::Scope scope(timer, "Fault right-hand side");
-      const unsigned int n   = damping.size();
+      // this rank's nodes, then (slip rate, state rate) of all of them
+      const unsigned int n   = op.n_contact();
       const auto        &law = *parameters.solver.law;
       op.apply(y.begin(), force_work.begin());
-      bool finite = true;
-      for (unsigned int k = 0; k < n; ++k)
+      std::vector<std::array<double, 2>> rates(damping.size());
+      for (unsigned int k = 0; k < damping.size(); ++k)
         {
+          const double alpha = y[n + first + k];
           const double V =
-            slip_rate(k, op.g0[k] + t * op.g1[k] - force_work[k], y[n + k]);
-          dy[k] = V;
-          dy[n + k] =
-            law.state_rate(contact.nodes()[k].params, y[n + k], std::abs(V));
-          finite = finite && std::isfinite(dy[k]) && std::isfinite(dy[n + k]);
+            slip_rate(k, op.g0[k] + t * op.g1[k] - force_work[k], alpha);
+          rates[k] = {
+            {V, law.state_rate(contact.nodes()[k].params, alpha, std::abs(V))}};
+        }
+      const auto all    = la::all_gather(communicator, rates);
+      bool       finite = true;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          dy[j]     = all[j][0];
+          dy[n + j] = all[j][1];
+          finite = finite && std::isfinite(dy[j]) && std::isfinite(dy[n + j]);
         }
       return finite ? 0 : 1;
     }
@@ -327,11 +349,15 @@ namespace rsfcycle
     typename GreenFault<dim>::Vector
     GreenFault<dim>::ode_absolute_tolerances(const double relative) const
     {
-      const unsigned int n = damping.size();
+      std::vector<double> L;
+      for (const auto &node : contact.nodes())
+        L.push_back(node.params.L);
+      L                    = la::all_gather(communicator, L);
+      const unsigned int n = L.size();
       Vector             a(2 * n);
       for (unsigned int k = 0; k < n; ++k)
         {
-          a[k]     = relative * contact.nodes()[k].params.L;
+          a[k]     = relative * L[k];
           a[n + k] = relative;
         }
       return a;
@@ -350,20 +376,23 @@ namespace rsfcycle
     output::Sample
     GreenFault<dim>::sample(const State &state) const
     {
-      const unsigned int                 n     = state.slip.size();
-      const auto                        &law   = *parameters.solver.law;
-      const auto                        &nodes = contact.nodes();
-      output::Sample                     sample;
-      std::vector<double>                rates(n), stresses(n), log10_states(n);
-      std::vector<std::array<double, 2>> slip(n);
-      for (unsigned int k = 0; k < n; ++k)
+      // this rank's nodes (from `first` in the state of all nodes)
+      const unsigned int  n     = state.slip.size();
+      const auto         &law   = *parameters.solver.law;
+      const auto         &nodes = contact.nodes();
+      const unsigned int  n_own = nodes.size();
+      output::Sample      sample;
+      std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own);
+      std::vector<std::array<double, 2>> slip(n_own);
+      for (unsigned int k = 0; k < n_own; ++k)
         {
-          const auto &p = nodes[k].params;
-          rates[k]      = std::abs(state.rate[k]);
-          slip[k]       = {{state.slip[k], 0.}};
-          stresses[k]   = nodes[k].normal_force / nodes[k].weight *
-                        law.friction_coefficient(p, state.alpha[k], rates[k]);
-          log10_states[k] = p.log_theta(state.alpha[k]) / std::log(10.);
+          const auto  &p     = nodes[k].params;
+          const double alpha = state.alpha[first + k];
+          rates[k]           = std::abs(state.rate[first + k]);
+          slip[k]            = {{state.slip[first + k], 0.}};
+          stresses[k]        = nodes[k].normal_force / nodes[k].weight *
+                        law.friction_coefficient(p, alpha, rates[k]);
+          log10_states[k] = p.log_theta(alpha) / std::log(10.);
         }
       sample.slip_rates     = contact.gather(rates);
       sample.slip           = contact.gather(slip);
@@ -391,7 +420,7 @@ namespace rsfcycle
       return {parameters.run.scene + " (green-function)",
               dim,
               discretisation.dof_handler.n_dofs(),
-              1};
+              Utilities::MPI::n_mpi_processes(communicator)};
     }
 
 
@@ -412,12 +441,16 @@ namespace rsfcycle
         log << " as an H-matrix (tolerance "
             << parameters.solver.green_compression_tolerance << ": "
             << format_number(100. * op.compressed->stored_entries() /
-                             (double(op.n_contact()) * op.n_contact()))
+                             (double(op.n_rows()) * op.n_contact()))
             << " % of the dense numbers, " << op.compressed->n_low_rank_blocks()
             << " low-rank and " << op.compressed->n_dense_blocks()
             << " dense blocks, product error " << compression_error << ")";
       else
         log << " dense";
+      if (const unsigned int ranks =
+            Utilities::MPI::n_mpi_processes(communicator);
+          ranks > 1)
+        log << " (" << op.n_rows() << " rows on rank 0 of " << ranks << ")";
       log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())
         log << "from a Cholesky factor of " << op.n_interior << " unknowns and "
@@ -446,7 +479,8 @@ namespace rsfcycle
                                           operator_file,
                                         op,
                                         fingerprint,
-                                        discretisation.dof_handler.n_dofs());
+                                        discretisation.dof_handler.n_dofs(),
+                                        communicator);
         }
       if (op.compressed)
         op.release_dense();

@@ -36,52 +36,82 @@ namespace rsfcycle
 
     struct HierarchicalMatrix::Data
     {
-      hmat_cluster_tree_t *tree   = nullptr;
+      hmat_cluster_tree_t *rows = nullptr, *columns = nullptr;
       hmat_matrix_t       *matrix = nullptr;
-      // the clustering's order: position k holds original index order[k]
-      const int  *order = nullptr;
+      // the clusterings' orders: position k holds original index order[k]
+      const int  *row_order = nullptr, *column_order = nullptr;
       hmat_info_t info;
-      // x and y in the clustering's order (the product is not const in
+      // x and y in the clusterings' orders (the product is not const in
       // hmat-oss's interface)
       mutable std::vector<double> x, y;
+
+      ~Data()
+      {
+        if (matrix != nullptr)
+          interface().destroy(matrix);
+        if (columns != nullptr && columns != rows)
+          hmat_delete_cluster_tree(columns);
+        if (rows != nullptr)
+          hmat_delete_cluster_tree(rows);
+      }
     };
 
 
-    HierarchicalMatrix::HierarchicalMatrix(const dealii::FullMatrix<double> &A,
-                                           const std::vector<double> &points,
-                                           const unsigned int         dim,
-                                           const double               tolerance,
-                                           const unsigned int         leaf_size,
-                                           const double               eta)
+    namespace
+    {
+      hmat_cluster_tree_t *
+      cluster_tree(const std::vector<double> &points,
+                   const unsigned int         dim,
+                   const unsigned int         leaf_size)
+      {
+        hmat_clustering_algorithm_t *median = hmat_create_clustering_median();
+        hmat_clustering_algorithm_t *algorithm =
+          hmat_create_clustering_max_dof(median, leaf_size);
+        hmat_cluster_tree_t *tree =
+          hmat_create_cluster_tree(const_cast<double *>(points.data()),
+                                   dim,
+                                   points.size() / dim,
+                                   algorithm);
+        hmat_delete_clustering(algorithm);
+        hmat_delete_clustering(median);
+        if (tree == nullptr)
+          throw std::runtime_error("hmat-oss: the clustering failed");
+        return tree;
+      }
+    } // namespace
+
+
+    HierarchicalMatrix::HierarchicalMatrix(
+      const dealii::FullMatrix<double> &A,
+      const std::vector<double>        &row_points,
+      const std::vector<double>        &column_points,
+      const unsigned int                dim,
+      const double                      tolerance,
+      const unsigned int                leaf_size,
+      const double                      eta)
       : data(std::make_unique<Data>())
     {
       auto      &hmat = interface();
-      const int  n    = A.m();
       const auto fail = [](const std::string &what) {
         return std::runtime_error("hmat-oss: " + what + " failed");
       };
-      if (A.n() != A.m() || points.size() != dim * A.m())
+      if (row_points.size() != dim * A.m() ||
+          column_points.size() != dim * A.n())
         throw std::invalid_argument(
-          "HierarchicalMatrix: a square matrix and one point per row");
+          "HierarchicalMatrix: one point per row and per column");
+      const bool symmetric = row_points == column_points;
 
-      hmat_clustering_algorithm_t *median = hmat_create_clustering_median();
-      hmat_clustering_algorithm_t *algorithm =
-        hmat_create_clustering_max_dof(median, leaf_size);
-      data->tree = hmat_create_cluster_tree(const_cast<double *>(points.data()),
-                                            dim,
-                                            n,
-                                            algorithm);
-      hmat_delete_clustering(algorithm);
-      hmat_delete_clustering(median);
-      if (data->tree == nullptr)
-        throw fail("clustering");
-      data->order = hmat_cluster_get_indices(data->tree);
+      data->rows = cluster_tree(row_points, dim, leaf_size);
+      data->columns =
+        symmetric ? data->rows : cluster_tree(column_points, dim, leaf_size);
+      data->row_order    = hmat_cluster_get_indices(data->rows);
+      data->column_order = hmat_cluster_get_indices(data->columns);
 
       hmat_admissibility_t *admissibility =
         hmat_create_admissibility_standard(eta);
-      data->matrix = hmat.create_empty_hmatrix_admissibility(data->tree,
-                                                             data->tree,
-                                                             1,
+      data->matrix = hmat.create_empty_hmatrix_admissibility(data->rows,
+                                                             data->columns,
+                                                             symmetric ? 1 : 0,
                                                              admissibility);
       hmat_delete_admissibility(admissibility);
       if (data->matrix == nullptr)
@@ -94,33 +124,26 @@ namespace rsfcycle
       context.compression     = hmat_create_compression_aca_plus(tolerance);
       context.simple_compute  = entry;
       context.user_context    = const_cast<dealii::FullMatrix<double> *>(&A);
-      context.lower_symmetric = 1;
+      context.lower_symmetric = symmetric ? 1 : 0;
       context.progress        = nullptr;
       const int error         = hmat.assemble_generic(data->matrix, &context);
       hmat_delete_compression(context.compression);
       if (error != 0)
         throw fail("the assembly");
       hmat.get_info(data->matrix, &data->info);
-      data->x.resize(n);
-      data->y.resize(n);
+      data->x.resize(A.n());
+      data->y.resize(A.m());
     }
 
 
-    HierarchicalMatrix::~HierarchicalMatrix()
-    {
-      if (data->matrix != nullptr)
-        interface().destroy(data->matrix);
-      if (data->tree != nullptr)
-        hmat_delete_cluster_tree(data->tree);
-    }
+    HierarchicalMatrix::~HierarchicalMatrix() = default;
 
 
     void
     HierarchicalMatrix::vmult(const double *x, double *y) const
     {
-      const unsigned int n = data->x.size();
-      for (unsigned int k = 0; k < n; ++k)
-        data->x[k] = x[data->order[k]];
+      for (unsigned int k = 0; k < data->x.size(); ++k)
+        data->x[k] = x[data->column_order[k]];
       const double one = 1, zero = 0;
       if (interface().gemm_dense('N',
                                  'N',
@@ -132,8 +155,15 @@ namespace rsfcycle
                                  data->y.data(),
                                  1) != 0)
         throw std::runtime_error("hmat-oss: the product failed");
-      for (unsigned int k = 0; k < n; ++k)
-        y[data->order[k]] = data->y[k];
+      for (unsigned int k = 0; k < data->y.size(); ++k)
+        y[data->row_order[k]] = data->y[k];
+    }
+
+
+    unsigned int
+    HierarchicalMatrix::m() const
+    {
+      return data->y.size();
     }
 
 

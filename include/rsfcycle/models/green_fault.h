@@ -49,9 +49,12 @@ namespace rsfcycle
      *   ds_k/dt = V_k,  d alpha_k/dt = the state law's rate,
      * with c_k = eta_k w_k the radiation damping and N_k = w_k |sigma_n|
      * the normal force of the node (the same lumped weights as the volume
-     * path). Every right-hand side applies S (a dense matrix-vector
+     * path). Every right-hand side applies S (a dense or H-matrix
      * product) and solves the balance for V_k node by node (a safeguarded
-     * Newton in log |V|, the friction::Law of `Solver/State law`). The
+     * Newton in log |V|, the friction::Law of `Solver/State law`). On N
+     * ranks every rank holds the state of all nodes and the rows of S of
+     * its own; the rates are gathered after each right-hand side, so
+     * ARKODE takes the same steps on every rank. The
      * simulator integrates it with `Time stepping/Integrator =
      * runge-kutta` and writes the same files as the volume path (no VTU).
      */
@@ -154,11 +157,18 @@ namespace rsfcycle
                  double        t,
                  double       *V) const;
 
-      const Parameters               &parameters;
-      const physics::Scene<dim>      &scene;
-      std::ostream                   &log;
-      mutable TimerOutput             timer;
-      physics::Discretisation<dim>    discretisation;
+      const Parameters            &parameters;
+      const physics::Scene<dim>   &scene;
+      std::ostream                &log;
+      mutable TimerOutput          timer;
+      physics::Discretisation<dim> discretisation;
+      MPI_Comm                     communicator;
+      /**
+       * This rank's first contact node in the state (the nodes of all
+       * ranks on every rank, rank by rank; this rank computes the rows of
+       * its own, the others' rates are gathered).
+       */
+      unsigned int                    first = 0;
       physics::ContactQuadrature<dim> contact;
       physics::GreenOperator          op;
       double                          setup_seconds = 0;

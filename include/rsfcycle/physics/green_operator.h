@@ -6,11 +6,10 @@
 #include <deal.II/lac/vector.h>
 #include <memory>
 #include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/physics/global_system.h>
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/hierarchical_matrix.h>
-#include <rsfcycle/solvers/spatial_problem.h>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace rsfcycle
@@ -34,46 +33,57 @@ namespace rsfcycle
      * discretisation; F / w_k is the elastic shear traction. An
      * observation u_p = P u (a surface station) is, the same way,
      *   u_p(s, t) = o0 + t o1 + O s,   O = P_c - P_I K_II^-1 K_Ic.
-     * Everything is computed from the assembled stiffness with one sparse
-     * Cholesky factor of K_II (CHOLMOD) and one solve per contact node, the
-     * right-hand sides `block_size` at a time, one MPI rank. S is kept
-     * dense or, after compress(), as an H-matrix (solvers::
-     * HierarchicalMatrix).
+     * The contact nodes are numbered rank by rank (GlobalSystem::
+     * contact_dofs); a rank holds the rows of S, g0, g1 of its own nodes,
+     * first_row ... first_row + n_rows() - 1 (S is symmetric: it computes
+     * them as the columns K_II^-1 K_Ic of its nodes, with a CHOLMOD factor
+     * of the whole K_II on every rank, `block_size` right-hand sides at a
+     * time), and all of O, o0, o1. The rows are kept dense or, after
+     * compress(), as an H-matrix (solvers::HierarchicalMatrix).
      */
     struct GreenOperator
     {
-      dealii::FullMatrix<double> S;  // n_c x n_c [N/m^(dim-1) per m]
-      dealii::Vector<double>     g0; // [N/m^(3-dim)]
-      dealii::Vector<double>     g1; // [N/m^(3-dim) per s]
+      dealii::FullMatrix<double> S;  // n_rows x n_c [N/m^(dim-1) per m]
+      dealii::Vector<double>     g0; // n_rows [N/m^(3-dim)]
+      dealii::Vector<double>     g1; // n_rows [N/m^(3-dim) per s]
       dealii::FullMatrix<double> O;  // n_obs x n_c [-]
       dealii::Vector<double>     o0; // [m]
       dealii::Vector<double>     o1; // [m/s]
+      unsigned int               first_row  = 0;
+      unsigned int               n_nodes    = 0; // n_c, all ranks
       unsigned int               n_interior = 0;
       unsigned int               n_blocks   = 0; // multi-RHS solves
-      /** S as an H-matrix, once compress() has run; apply() then uses it. */
+      /** The rows of S as an H-matrix, once compress() has run. */
       std::shared_ptr<const solvers::HierarchicalMatrix> compressed;
 
       unsigned int
       n_contact() const
       {
+        return n_nodes;
+      }
+
+      unsigned int
+      n_rows() const
+      {
         return g0.size();
       }
 
       /**
-       * force = S slip: the H-matrix's product if S is compressed, else
-       * each row a vectorised dot product (3 - 8 times FullMatrix::vmult,
-       * whose one running sum serialises the adds;
-       * benchmarks/green-function/README.md).
+       * force = this rank's rows of S times slip (all n_c nodes): the
+       * H-matrix's product if S is compressed, else each row a vectorised
+       * dot product (3 - 8 times FullMatrix::vmult, whose one running sum
+       * serialises the adds; benchmarks/green-function/README.md).
        */
       void
       apply(const double *slip, double *force) const;
 
       /**
-       * Compress S as an H-matrix of relative tolerance `tolerance`, row k
-       * at the point (points[dim k], ...), and return the largest relative
-       * error (2-norm) of the compressed product against the dense one for
-       * two test slips (uniform, and pseudo-random). S stays until
-       * release_dense().
+       * Compress this rank's rows of S as an H-matrix of relative tolerance
+       * `tolerance` (symmetric storage on one rank), node k at the point
+       * (points[dim k], ...) for all n_c nodes, and return the largest
+       * relative error (2-norm) of the compressed product against the
+       * dense one for two test slips (uniform, and pseudo-random), over
+       * this rank's rows. S stays until release_dense().
        */
       double
       compress(const std::vector<double> &points,
@@ -86,15 +96,10 @@ namespace rsfcycle
     };
 
     /**
-     * An observation as a weighted sum of dofs: (local index, weight),
-     * hanging dofs replaced by the dofs they depend on.
-     */
-    using ObservationRow = std::vector<std::pair<unsigned int, double>>;
-
-    /**
      * The rows of the scene's observation points: the physical vertical
      * displacement (antiplane: the out-of-plane one) interpolated in the
-     * cell around each point (one rank).
+     * cell around each point, in global dof indices; empty for a point
+     * whose cell this rank does not own (GlobalSystem picks the owner's).
      */
     template <int dim>
     std::vector<ObservationRow>
@@ -103,57 +108,56 @@ namespace rsfcycle
                      bool                       antiplane);
 
     /**
-     * The operator of the assembled discretisation for the contact nodes
-     * of `contact` (one tangential dof each) and the observation rows.
-     * Throws std::invalid_argument on more than one MPI rank or a node
-     * with two tangential dofs.
+     * This rank's part of the operator of the gathered system (the same
+     * on every rank but for the rows).
      */
-    template <int dim>
     GreenOperator
-    compute_green_operator(const Discretisation<dim>         &discretisation,
-                           const solvers::ContactSet         &contact,
-                           const std::vector<ObservationRow> &observations,
-                           unsigned int                       block_size = 64);
+    compute_green_operator(const GlobalSystem &system,
+                           MPI_Comm            communicator,
+                           unsigned int        block_size = 64);
 
     /**
      * A CRC32 of everything the operator depends on: the assembled
      * stiffness, the fixed dofs and their prescribed velocity, the body
-     * force and prestress, the contact's dofs and the observation rows.
-     * Two runs with the same value have the same operator (the same mesh,
-     * material, boundary roles, loads and observation points); the
-     * friction, the normal stress and the radiation damping do not enter.
+     * force and prestress, the contact's dofs (and their split among the
+     * ranks) and the observation rows. Two runs with the same value have
+     * the same operator (the same mesh, material, boundary roles, loads,
+     * observation points and number of ranks: the dof numbering depends on
+     * it); the friction, the normal stress and the radiation damping do
+     * not enter.
      */
-    template <int dim>
     std::uint32_t
-    operator_fingerprint(const Discretisation<dim>         &discretisation,
-                         const solvers::ContactSet         &contact,
-                         const std::vector<ObservationRow> &observations);
+    operator_fingerprint(const GlobalSystem &system);
 
     /**
      * The format of the operator file. Increase it whenever its layout
      * changes: a file of another format is refused, never misread.
      */
-    constexpr std::uint32_t green_operator_format = 1;
+    constexpr std::uint32_t green_operator_format = 2;
 
     /**
-     * Write `file` (green-operator.bin in a run folder): a header (magic
-     * "rsfgreen", format, fingerprint, the sizes n_dofs, n_c, n_o, CRC32 of
-     * the payload and of the header) and the payload (S, g0, g1, O, o0, o1
-     * as doubles, row by row). Written to file.tmp and renamed: the file is
-     * either complete or absent. A failed write is a std::runtime_error
-     * naming the file.
+     * Write `file` (green-operator.bin in a run folder), collectively: a
+     * header (magic "rsfgreen", format, fingerprint, the sizes n_dofs, n_c,
+     * n_o, the number of ranks, CRC32 of the payload and of the header)
+     * and the payload (g0, g1, O, o0, o1, then the rows of S, as doubles,
+     * the nodes rank by rank), each rank writing its rows in turn. Written
+     * to file.tmp and renamed: the file is either complete or absent. A
+     * failed write is a std::runtime_error naming the file on every rank.
      */
     void
     write_green_operator(const std::string   &file,
                          const GreenOperator &op,
                          std::uint32_t        fingerprint,
-                         std::uint64_t        n_dofs);
+                         std::uint64_t        n_dofs,
+                         MPI_Comm             communicator);
 
     /**
-     * Read `file` and check it against this run: a missing, truncated or
-     * damaged (checksum) file, another format, or one written for another
-     * mesh, material or load (sizes, fingerprint) is an
-     * std::invalid_argument of one line, "what: file: what is wrong".
+     * Read this rank's part of `file` and check the whole file against this
+     * run: a missing, truncated or damaged (checksum) file, another format,
+     * or one written for another mesh, material, load or number of ranks
+     * (sizes, fingerprint) is an std::invalid_argument of one line, "what:
+     * file: what is wrong", on every rank. `first_row` and `n_rows`: this
+     * rank's contact nodes.
      */
     GreenOperator
     read_green_operator(const std::string &file,
@@ -161,7 +165,10 @@ namespace rsfcycle
                         std::uint32_t      fingerprint,
                         std::uint64_t      n_dofs,
                         unsigned int       n_contact,
-                        unsigned int       n_observations);
+                        unsigned int       n_observations,
+                        unsigned int       first_row,
+                        unsigned int       n_rows,
+                        MPI_Comm           communicator);
   } // namespace physics
 } // namespace rsfcycle
 

@@ -11,28 +11,32 @@ namespace rsfcycle
   namespace solvers
   {
     /**
-     * A symmetric dense matrix whose rows and columns belong to points in
-     * space (a fault operator: row k is the force at node k per unit slip
-     * of every node), compressed as a hierarchical matrix by hmat-oss
-     * (Debian libhmat-oss-dev): the points are clustered by median splits
-     * down to `leaf_size` points, a block of two clusters whose distance is
-     * at least their smaller diameter / eta is stored in low rank (ACA+
-     * with partial pivoting, then recompressed, both to the relative
-     * tolerance), the others dense; only the lower triangle is stored.
-     * For an operator that decays with distance the storage and the cost of
-     * a product grow like n log n instead of n^2.
+     * A dense matrix whose rows and columns belong to points in space (a
+     * fault operator: row k is the force at node k per unit slip of every
+     * node), compressed as a hierarchical matrix by hmat-oss (Debian
+     * libhmat-oss-dev): the points are clustered by median splits down to
+     * `leaf_size` points, a block of two clusters whose distance is at
+     * least their smaller diameter / eta is stored in low rank (ACA+ with
+     * partial pivoting, then recompressed, both to the relative tolerance),
+     * the others dense; a symmetric matrix (the same points for rows and
+     * columns) stores its lower triangle only. For an operator that decays
+     * with distance the storage and the cost of a product grow like
+     * n log n instead of n^2.
      */
     class HierarchicalMatrix
     {
     public:
       /**
-       * Compress the symmetric n x n matrix A whose row k belongs to the
-       * point (points[dim k], ..., points[dim k + dim - 1]). The entries are
-       * read through A(i, j), i >= j; A is not kept. Throws
-       * std::runtime_error if hmat-oss fails.
+       * Compress the m x n matrix A whose row i belongs to the point
+       * (row_points[dim i], ..., row_points[dim i + dim - 1]) and column j to
+       * the point of column_points; if the two lists are equal, A must be
+       * symmetric and only its lower triangle is stored. The entries are
+       * read through A(i, j); A is not kept. Throws std::runtime_error if
+       * hmat-oss fails.
        */
       HierarchicalMatrix(const dealii::FullMatrix<double> &A,
-                         const std::vector<double>        &points,
+                         const std::vector<double>        &row_points,
+                         const std::vector<double>        &column_points,
                          unsigned int                      dim,
                          double                            tolerance,
                          unsigned int                      leaf_size = 32,
@@ -42,10 +46,12 @@ namespace rsfcycle
       HierarchicalMatrix &
       operator=(const HierarchicalMatrix &) = delete;
 
-      /** y = A x (x and y of length n, in the points' order). */
+      /** y = A x (x of length n, y of length m, in the points' order). */
       void
       vmult(const double *x, double *y) const;
 
+      unsigned int
+      m() const;
       unsigned int
       n() const;
 

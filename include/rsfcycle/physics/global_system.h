@@ -1,0 +1,84 @@
+#ifndef rsfcycle_physics_global_system_h
+#define rsfcycle_physics_global_system_h
+
+#include <cstddef>
+#include <deal.II/base/types.h>
+#include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/solvers/spatial_problem.h>
+#include <utility>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace physics
+  {
+    /**
+     * An observation as a weighted sum of dofs: (global dof index, weight),
+     * hanging dofs replaced by the dofs they depend on.
+     */
+    using ObservationRow =
+      std::vector<std::pair<dealii::types::global_dof_index, double>>;
+
+    /**
+     * The assembled elastic system of a Discretisation gathered onto every
+     * rank, in the global dof numbering: what the fault's Green's functions
+     * are computed from (physics/green_operator.h). On one rank it is the
+     * rank's own matrices; on N ranks every rank holds all of it (the
+     * set-up's memory does not fall with N; the operator's does).
+     */
+    struct GlobalSystem
+    {
+      /** The stiffness K in compressed rows. */
+      std::vector<std::size_t>  row_start;
+      std::vector<unsigned int> columns;
+      std::vector<double>       values;
+      /** Per dof: prescribed (Dirichlet, hanging), f, v_b. */
+      std::vector<bool> fixed;
+      /** The body force and the shear prestress as nodal forces [N]. */
+      std::vector<double> force;
+      /** The prescribed velocity of the fixed dofs [m/s] (load). */
+      std::vector<double> fixed_velocity;
+      /**
+       * The contact's tangential dof of every contact node, the nodes of
+       * rank 0 first (in its own order), then those of rank 1, ...
+       */
+      std::vector<unsigned int> contact_dofs;
+      /** First contact node of every rank, then the number of nodes. */
+      std::vector<unsigned int> rank_offsets;
+      /** The observation rows (every point once). */
+      std::vector<ObservationRow> observations;
+
+      unsigned int
+      n() const
+      {
+        return fixed.size();
+      }
+      std::size_t
+      row_begin(const unsigned int i) const
+      {
+        return row_start[i];
+      }
+      std::size_t
+      row_end(const unsigned int i) const
+      {
+        return row_start[i + 1];
+      }
+    };
+
+    /**
+     * Gather the stiffness, the fixed dofs, the loads and the contact dofs
+     * of `contact` onto every rank, and the observation rows: `local_rows`
+     * holds one row per observation point, empty on the ranks that do not
+     * own the point's cell; the first rank's non-empty row is taken.
+     * Throws std::invalid_argument for a contact node with two tangential
+     * dofs (3D) and for a point no rank owns.
+     */
+    template <int dim>
+    GlobalSystem
+    gather_system(const Discretisation<dim>         &discretisation,
+                  const solvers::ContactSet         &contact,
+                  const std::vector<ObservationRow> &local_rows);
+  } // namespace physics
+} // namespace rsfcycle
+
+#endif

@@ -1,0 +1,109 @@
+#!/bin/bash
+# Solver/Bulk = green-function on 2 MPI ranks (each rank the rows of S of
+# its contact nodes, the fault's state on every rank). SEAS BP1-QD at 200 m
+# cells through its first event (about 193 years), checked:
+#  - 1 and 2 ranks give the same first event: start time within 1e-6
+#    relative (the ranks number the nodes differently, so the products
+#    round differently), peak slip rate within 1 %, slip within 0.1 %;
+#  - on 2 ranks each rank holds fewer rows than there are contact nodes
+#    (the log's "rows on rank 0 of 2");
+#  - the 2-rank operator file reused on 2 ranks with the H-matrix
+#    (Green operator storage = h-matrix): first event within 1e-6;
+#  - the 1-rank operator file refused on 2 ranks in one line naming the
+#    rank counts, non-zero exit, no run folder;
+#  - killed (SIGKILL) after a checkpoint and resumed on 2 ranks: every
+#    output file and checkpoint.bin bitwise those of the uninterrupted run.
+# Usage: green_function_ranks.sh RSFCYCLE SOURCE_DIR WORK_DIR
+set -u
+exe=$1; src=$2; work=$3
+rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpi=(mpirun --quiet --oversubscribe -np)
+n_pass=0; n_fail=0
+check() { # condition (0/1), label
+  if [ "$1" -eq 0 ]; then n_pass=$((n_pass + 1)); echo "$2: ok";
+  else n_fail=$((n_fail + 1)); echo "FAILED $2"; fi
+}
+make_prm() { # name, extra lines
+  local name=$1; shift
+  cat > "$name.prm" <<PRM
+include $src/prm/seas-bp1-qd.prm
+set End time = 6.3e9
+set Output directory = $name
+subsection Mesh
+  set Local refinements = 3
+end
+subsection Solver
+  set Bulk = green-function
+end
+subsection Time stepping
+  set Integrator = runge-kutta
+end
+subsection Output
+  set Checkpoint steps = 200
+end
+PRM
+  printf '%s\n' "$@" >> "$name.prm"
+}
+# first event of two events.csv: start, peak, slip within the bounds
+same_event() { # a, b, relative bound on the start
+  python3 - "$1/events.csv" "$2/events.csv" "$3" <<'PY'
+import csv, sys
+a, b = (next(csv.DictReader(open(f))) for f in sys.argv[1:3])
+bound = float(sys.argv[3])
+rel = lambda k: abs(float(a[k]) - float(b[k])) / abs(float(b[k]))
+print("start %.2e, peak %.2e, slip %.2e relative" %
+      (rel("start_s"), rel("peak_slip_rate_m_per_s"), rel("slip_um")))
+sys.exit(0 if rel("start_s") < bound and rel("peak_slip_rate_m_per_s") < 1e-2
+         and rel("slip_um") < 1e-3 else 1)
+PY
+}
+
+make_prm one; make_prm two
+"${mpi[@]}" 1 "$exe" one.prm > one.log 2>&1
+check $? "1-rank run"
+"${mpi[@]}" 2 "$exe" two.prm > two.log 2>&1
+check $? "2-rank run"
+same_event two one 1e-6
+check $? "first event on 2 ranks as on 1"
+rows=$(sed -n 's/.*(\([0-9]*\) rows on rank 0 of 2).*/\1/p' two.log)
+nodes=$(sed -n 's/.*operator \([0-9]*\) x .*/\1/p' two.log)
+[ -n "$rows" ] && [ "$rows" -lt "$nodes" ]
+check $? "rank 0 holds $rows of $nodes rows"
+
+make_prm reuse "subsection Solver" "  set Green operator storage = h-matrix" \
+  "  set Green operator file = two/green-operator.bin" "end"
+"${mpi[@]}" 2 "$exe" reuse.prm > reuse.log 2>&1 &&
+  grep -q "as an H-matrix" reuse.log && grep -q "read from .*two/green-operator.bin" reuse.log
+check $? "2-rank operator file reused on 2 ranks, compressed"
+same_event reuse two 1e-6
+check $? "first event with the H-matrix as with the dense rows"
+
+make_prm foreign "subsection Solver" \
+  "  set Green operator file = one/green-operator.bin" "end"
+"${mpi[@]}" 2 "$exe" foreign.prm > foreign.out 2> foreign.err
+status=$?
+[ $status -ne 0 ] && [ "$(grep -c . foreign.err)" -eq 1 ] &&
+  grep -q "written on 1 MPI rank(s), this run has 2" foreign.err && [ ! -e foreign ]
+check $? "1-rank operator file refused on 2 ranks (exit $status): $(cat foreign.err)"
+
+make_prm killed
+"${mpi[@]}" 2 "$exe" killed.prm > killed.log 2>&1 &
+pid=$!
+for i in $(seq 1 1200); do
+  [ -f killed/checkpoint.bin ] && [ -f killed/time-series.csv ] &&
+    [ "$(wc -l < killed/time-series.csv)" -gt 1500 ] && break
+  sleep 0.05
+done
+kill -9 $pid; wait $pid 2>/dev/null
+! grep -q "^Summary" killed.log
+check $? "killed before its end"
+"${mpi[@]}" 2 "$exe" --resume killed > killed-2.log 2>&1
+ok=$?
+for f in time-series.csv events.csv base-profile.csv global.dat checkpoint.bin; do
+  cmp -s two/$f killed/$f || { ok=1; echo "$f differs after the resume"; }
+done
+check $ok "SIGKILL + resume on 2 ranks: identical to the uninterrupted run"
+
+echo "green-function on ranks: $n_pass passed, $n_fail failed"
+[ $n_fail -eq 0 ]

@@ -3,7 +3,7 @@
 #
 # Usage:
 #   QDYN_SRC=DIR benchmarks/seas-bp1/qdyn/run.sh OUTDIR [--bp2 | --bp2-only]
-#                                                [--tmax YEARS]
+#                                                [--tmax YEARS] [--n N]
 #
 # DIR: a git clone of https://github.com/ydluo/qdyn. If its HEAD is not the
 # pinned commit, a clean clone is checked out at it (detached HEAD) and
@@ -20,7 +20,8 @@
 #                         ACC = 1e-8, 3000 years
 #   OUTDIR/BP2_L40_N2048  with --bp2 or --bp2-only: the same with
 #                         D_c = 4 mm, 1200 years
-# --tmax YEARS ends both at YEARS instead (a test).
+# --tmax YEARS ends both at YEARS instead (a test); --n N takes N elements
+# instead of 2048 (a power of 2: 4096 gives 9.77 m; the names say N).
 # Each folder gets qdyn.in, iot_depths.txt, QDYN's output, log.txt (QDYN's
 # screen output) and time.txt (/usr/bin/time -v). OUTDIR gets NAME.gen.txt
 # (make_input.py's output), timing.txt (start and end dates),
@@ -40,6 +41,7 @@ die() {
 outdir=
 cases="A"
 tmax=
+n=2048
 while [ $# -gt 0 ]; do
     case $1 in
         --bp2) cases="A BP2" ;;
@@ -47,6 +49,11 @@ while [ $# -gt 0 ]; do
         --tmax)
             [ $# -ge 2 ] || die "--tmax needs a number of years"
             tmax=$2
+            shift
+            ;;
+        --n)
+            [ $# -ge 2 ] || die "--n needs a number of elements"
+            n=$2
             shift
             ;;
         -h | --help)
@@ -116,9 +123,9 @@ run_case() {  # name, stats.py options, make_input.py options ...
 
 for c in $cases; do
     case $c in
-        A) run_case A_L40_N2048 "--regular_from_event 5" \
-            --L 40e3 --N 2048 --acc 1e-8 --tmax_yr 3000 ;;
-        BP2) run_case BP2_L40_N2048 "" \
-            --L 40e3 --N 2048 --acc 1e-8 --tmax_yr 1200 --Dc 4e-3 ;;
+        A) run_case "A_L40_N$n" "--regular_from_event 5" \
+            --L 40e3 --N "$n" --acc 1e-8 --tmax_yr 3000 ;;
+        BP2) run_case "BP2_L40_N$n" "" \
+            --L 40e3 --N "$n" --acc 1e-8 --tmax_yr 1200 --Dc 4e-3 ;;
     esac
 done

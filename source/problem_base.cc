@@ -8,6 +8,7 @@
 #include <rsfcycle/models/contact_layout.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/output/snapshots.h>
+#include <rsfcycle/physics/global_system.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/simulator/simulator.templates.h>
 #include <rsfcycle/solvers/amg_correction.h>
@@ -234,45 +235,17 @@ namespace rsfcycle
   void
   ProblemBase<dim>::setup_observation_points()
   {
-    const auto          &fe = discretisation.fe;
-    const MappingQ1<dim> mapping;
+    // the points' rows in global indices (on the ranks owning their cells),
+    // the same as the Green's-function method's
     observation_weights.clear();
     std::vector<double> found;
-    for (const auto &[name, point] : scene.observation_points())
+    for (const auto &row : physics::observation_rows(discretisation,
+                                                     scene,
+                                                     parameters.run.antiplane))
       {
         std::vector<std::pair<types::global_dof_index, double>> w;
-        // (on other ranks' parts of the mesh the search may find no cell)
-        std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
-          cell_and_point;
-        try
-          {
-            cell_and_point = GridTools::find_active_cell_around_point(
-              mapping, discretisation.dof_handler, point);
-          }
-        catch (const std::exception &)
-          {
-            cell_and_point.first = discretisation.dof_handler.end();
-          }
-        if (cell_and_point.first.state() == IteratorState::valid &&
-            cell_and_point.first->is_locally_owned())
-          {
-            const Quadrature<dim> q(
-              GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
-            FEValues<dim> fe_values(mapping, fe, q, update_values);
-            fe_values.reinit(cell_and_point.first);
-            std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
-            cell_and_point.first->get_dof_indices(indices);
-            // the displacement along the physical vertical (antiplane:
-            // the out-of-plane displacement)
-            const Tensor<1, dim> up = scene.vertical();
-            for (unsigned int i = 0; i < indices.size(); ++i)
-              {
-                const unsigned int c = fe.system_to_component_index(i).first;
-                w.emplace_back(discretisation.local_index(indices[i]),
-                               fe_values.shape_value(i, 0) *
-                                 (parameters.run.antiplane ? 1. : up[c]));
-              }
-          }
+        for (const auto &[j, weight] : row)
+          w.emplace_back(discretisation.local_index(j), weight);
         found.push_back(w.empty() ? 0. : 1.);
         observation_weights.push_back(w);
       }

@@ -1,6 +1,9 @@
 // The assembled system gathered onto every rank (physics/global_system.h).
 #include <array>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/physics/global_system.h>
 #include <stdexcept>
@@ -9,6 +12,61 @@ namespace rsfcycle
 {
   namespace physics
   {
+    template <int dim>
+    std::vector<ObservationRow>
+    observation_rows(const Discretisation<dim> &discretisation,
+                     const Scene<dim>          &scene,
+                     const bool                 antiplane)
+    {
+      const auto                 &fe = discretisation.fe;
+      const MappingQ1<dim>        mapping;
+      const auto                 &hanging = discretisation.hanging_constraints;
+      std::vector<ObservationRow> rows;
+      for (const auto &[name, point] : scene.observation_points())
+        {
+          rows.emplace_back();
+          std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
+            cell_and_point;
+          try
+            {
+              cell_and_point = GridTools::find_active_cell_around_point(
+                mapping, discretisation.dof_handler, point);
+            }
+          catch (const std::exception &)
+            {
+              continue; // not in this rank's part of the mesh
+            }
+          if (cell_and_point.first.state() != IteratorState::valid ||
+              !cell_and_point.first->is_locally_owned())
+            continue;
+          const Quadrature<dim> q(
+            GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
+          FEValues<dim> fe_values(mapping, fe, q, update_values);
+          fe_values.reinit(cell_and_point.first);
+          std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+          cell_and_point.first->get_dof_indices(indices);
+          const Tensor<1, dim> up  = scene.vertical();
+          ObservationRow      &row = rows.back();
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              const double       w =
+                fe_values.shape_value(i, 0) * (antiplane ? 1. : up[c]);
+              if (w == 0)
+                continue;
+              // a hanging node's value is that of the dofs it depends on
+              if (const auto *entries =
+                    hanging.get_constraint_entries(indices[i]))
+                for (const auto &[j, factor] : *entries)
+                  row.emplace_back(j, w * factor);
+              else
+                row.emplace_back(indices[i], w);
+            }
+        }
+      return rows;
+    }
+
+
     template <int dim>
     GlobalSystem
     gather_system(const Discretisation<dim>         &discretisation,
@@ -103,6 +161,10 @@ namespace rsfcycle
     }
 
 
+    template std::vector<ObservationRow>
+    observation_rows(const Discretisation<2> &, const Scene<2> &, bool);
+    template std::vector<ObservationRow>
+    observation_rows(const Discretisation<3> &, const Scene<3> &, bool);
     template GlobalSystem
     gather_system(const Discretisation<2> &,
                   const solvers::ContactSet &,

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <deal.II/base/types.h>
 #include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <utility>
 #include <vector>
@@ -64,6 +65,19 @@ namespace rsfcycle
         return row_start[i + 1];
       }
     };
+
+    /**
+     * The rows of the scene's observation points: the physical vertical
+     * displacement (antiplane: the out-of-plane one) interpolated in the
+     * cell around each point, in global dof indices; empty for a point
+     * whose cell this rank does not own (gather_system() picks the
+     * owner's; the volume path sums over the ranks).
+     */
+    template <int dim>
+    std::vector<ObservationRow>
+    observation_rows(const Discretisation<dim> &discretisation,
+                     const Scene<dim>          &scene,
+                     bool                       antiplane);
 
     /**
      * Gather the stiffness, the fixed dofs, the loads and the contact dofs

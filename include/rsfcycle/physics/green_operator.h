@@ -96,18 +96,6 @@ namespace rsfcycle
     };
 
     /**
-     * The rows of the scene's observation points: the physical vertical
-     * displacement (antiplane: the out-of-plane one) interpolated in the
-     * cell around each point, in global dof indices; empty for a point
-     * whose cell this rank does not own (GlobalSystem picks the owner's).
-     */
-    template <int dim>
-    std::vector<ObservationRow>
-    observation_rows(const Discretisation<dim> &discretisation,
-                     const Scene<dim>          &scene,
-                     bool                       antiplane);
-
-    /**
      * This rank's part of the operator of the gathered system (the same
      * on every rank but for the rows).
      */

@@ -144,7 +144,16 @@ namespace rsfcycle
                                     scene,
                                     parameters.run.antiplane));
         fingerprint = physics::operator_fingerprint(system);
-        first =
+        // every rank's nodes in the state: counts and offsets of the gathers
+        counts.clear();
+        offsets.clear();
+        for (unsigned int r = 0; r + 1 < system.rank_offsets.size(); ++r)
+          {
+            offsets.push_back(system.rank_offsets[r]);
+            counts.push_back(system.rank_offsets[r + 1] -
+                             system.rank_offsets[r]);
+          }
+        const unsigned int first =
           system.rank_offsets[Utilities::MPI::this_mpi_process(communicator)];
         operator_source =
           resume ? parameters.run.output_directory + "/" + operator_file :
@@ -204,11 +213,11 @@ namespace rsfcycle
       }
       initial.t = 0;
       initial.rate.resize(initial.slip.size());
+      force_work.reinit(nodes.size());
       slip_rates(initial.slip.data(),
                  initial.alpha.data(),
                  0.,
                  initial.rate.data());
-      force_work.reinit(nodes.size());
       setup_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
@@ -274,14 +283,29 @@ namespace rsfcycle
                                 const double  t,
                                 double       *V) const
     {
-      const unsigned int  n = damping.size();
-      std::vector<double> force(n), rates(n);
-      op.apply(s, force.data());
-      for (unsigned int k = 0; k < n; ++k)
-        rates[k] =
-          slip_rate(k, op.g0[k] + t * op.g1[k] - force[k], alpha[first + k]);
-      const auto all = la::all_gather(communicator, rates);
-      std::copy(all.begin(), all.end(), V);
+      const unsigned int first = op.first_row;
+      op.apply(s, force_work.begin());
+      for (unsigned int k = 0; k < damping.size(); ++k)
+        V[first + k] = slip_rate(k,
+                                 op.g0[k] + t * op.g1[k] - force_work[k],
+                                 alpha[first + k]);
+      gather_in_place(V);
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::gather_in_place(double *values) const
+    {
+      if (counts.size() > 1)
+        MPI_Allgatherv(MPI_IN_PLACE,
+                       0,
+                       MPI_DATATYPE_NULL,
+                       values,
+                       counts.data(),
+                       offsets.data(),
+                       MPI_DOUBLE,
+                       communicator);
     }
 
 
@@ -290,27 +314,25 @@ namespace rsfcycle
     GreenFault<dim>::ode_rhs(const double t, const Vector &y, Vector &dy) const
     {
       TimerOutput::Scope scope(timer, "Fault right-hand side");
-      // this rank's nodes, then (slip rate, state rate) of all of them
-      const unsigned int n   = op.n_contact();
-      const auto        &law = *parameters.solver.law;
+      // this rank's nodes into their places, then the others' gathered
+      const unsigned int n     = op.n_contact();
+      const unsigned int first = op.first_row;
+      const auto        &law   = *parameters.solver.law;
       op.apply(y.begin(), force_work.begin());
-      std::vector<std::array<double, 2>> rates(damping.size());
       for (unsigned int k = 0; k < damping.size(); ++k)
         {
           const double alpha = y[n + first + k];
           const double V =
             slip_rate(k, op.g0[k] + t * op.g1[k] - force_work[k], alpha);
-          rates[k] = {
-            {V, law.state_rate(contact.nodes()[k].params, alpha, std::abs(V))}};
+          dy[first + k] = V;
+          dy[n + first + k] =
+            law.state_rate(contact.nodes()[k].params, alpha, std::abs(V));
         }
-      const auto all    = la::all_gather(communicator, rates);
-      bool       finite = true;
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          dy[j]     = all[j][0];
-          dy[n + j] = all[j][1];
-          finite = finite && std::isfinite(dy[j]) && std::isfinite(dy[n + j]);
-        }
+      gather_in_place(dy.begin());
+      gather_in_place(dy.begin() + n);
+      bool finite = true;
+      for (unsigned int j = 0; j < 2 * n; ++j)
+        finite = finite && std::isfinite(dy[j]);
       return finite ? 0 : 1;
     }
 
@@ -376,7 +398,8 @@ namespace rsfcycle
     output::Sample
     GreenFault<dim>::sample(const State &state) const
     {
-      // this rank's nodes (from `first` in the state of all nodes)
+      // this rank's nodes (from first_row in the state of all nodes)
+      const unsigned int  first = op.first_row;
       const unsigned int  n     = state.slip.size();
       const auto         &law   = *parameters.solver.law;
       const auto         &nodes = contact.nodes();

@@ -150,6 +150,13 @@ namespace rsfcycle
       /** @} */
 
     private:
+      /**
+       * values[offsets[r] ... offsets[r] + counts[r]) from rank r, on every
+       * rank (nothing to do on one).
+       */
+      void
+      gather_in_place(double *values) const;
+
       /** The slip rates of all nodes at the slip s and time t. */
       void
       slip_rates(const double *s,
@@ -164,11 +171,12 @@ namespace rsfcycle
       physics::Discretisation<dim> discretisation;
       MPI_Comm                     communicator;
       /**
-       * This rank's first contact node in the state (the nodes of all
-       * ranks on every rank, rank by rank; this rank computes the rows of
-       * its own, the others' rates are gathered).
+       * Per rank: its number of contact nodes and the first of them in the
+       * state (the nodes of all ranks on every rank, rank by rank; a rank
+       * computes its own, from GreenOperator::first_row on, and gathers
+       * the others').
        */
-      unsigned int                    first = 0;
+      std::vector<int>                counts, offsets;
       physics::ContactQuadrature<dim> contact;
       physics::GreenOperator          op;
       double                          setup_seconds = 0;

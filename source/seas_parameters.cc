@@ -28,20 +28,37 @@ namespace rsfcycle
       "Fault stations",
       "0, 2.5e3, 5e3, 7.5e3, 10e3, 12.5e3, 15e3, 17.5e3, 20e3, 25e3, "
       "30e3, 35e3",
-      Patterns::List(Patterns::Double(0)),
-      "Positions of the SEAS on-fault stations along the contact, in the "
-      "along-base coordinate of base-profile.csv (the depth on a vertical "
-      "fault) [m]; each writes fltst_dpXXX (XXX: the position in units "
-      "of 100 m) with the values interpolated linearly between the two "
-      "contact nodes around it");
+      Patterns::List(Patterns::Double()),
+      "Positions of the SEAS on-fault stations along the contact from "
+      "Fault station origin, in the along-base coordinate of "
+      "base-profile.csv (the depth on a vertical fault) [m]; each writes "
+      "fltst_dpXXX (XXX: the position in units of 100 m; >= 0) or, with "
+      "Fault station names = strike, fltst_strk+XX (signed), with the "
+      "values interpolated linearly between the two contact nodes around "
+      "it");
+    prm.declare_entry(
+      "Fault station origin",
+      "0",
+      Patterns::Double(),
+      "The along-base coordinate (as in base-profile.csv) that the fault "
+      "stations and the slip profile count from [m]: 0 is the contact's "
+      "first node (the top of a vertical fault); SEAS BP6: the injection "
+      "point");
+    prm.declare_entry(
+      "Fault station names",
+      "down-dip",
+      Patterns::Selection("down-dip|strike"),
+      "down-dip: fltst_dpXXX (SEAS BP1, BP2: XXX the distance in units of "
+      "100 m, 3 digits); strike: fltst_strk+XX (SEAS BP6: signed, 2 "
+      "digits)");
     prm.declare_entry(
       "Slip profile",
       "0, 35e3, 100",
-      Patterns::List(Patterns::Double(0), 3, 3),
+      Patterns::List(Patterns::Double(), 3, 3),
       "The positions of the SEAS slip profiles in slip.dat along the "
-      "contact (along-base coordinate): first, last, spacing [m]; all "
-      "within the contact nodes (the nodes of a load boundary are not "
-      "contact nodes)");
+      "contact (along-base coordinate, from Fault station origin): first, "
+      "last, spacing [m]; all within the contact nodes (the nodes of a "
+      "load boundary are not contact nodes)");
     prm.declare_entry("Slip profile interval",
                       "1.57788e8",
                       Patterns::Double(0),
@@ -81,6 +98,8 @@ namespace rsfcycle
     for (const auto &item :
          dealii::Utilities::split_string_list(prm.get("Fault stations")))
       fault_stations.push_back(std::stod(item));
+    origin       = prm.get_double("Fault station origin");
+    strike_names = prm.get("Fault station names") == "strike";
     const auto profile =
       dealii::Utilities::split_string_list(prm.get("Slip profile"));
     for (unsigned int i = 0; i < 3; ++i)
@@ -116,13 +135,19 @@ namespace rsfcycle
         ": needs first <= last and a spacing > 0");
     std::vector<std::string> names;
     for (const double x : fault_stations)
-      names.push_back(fault_station_file(x));
+      {
+        if (!strike_names && x < 0)
+          throw std::invalid_argument(
+            entry + "Fault stations: " + format_number(x) +
+            " m is negative; down-dip names (fltst_dpXXX) need positions "
+            ">= 0 from the origin (Fault station names = strike: signed)");
+        names.push_back(fault_station_file(x));
+      }
     std::sort(names.begin(), names.end());
     if (std::adjacent_find(names.begin(), names.end()) != names.end())
       throw std::invalid_argument(
-        entry + "Fault stations: two stations share the file name "
-                "fltst_dpXXX (XXX counts 100 m): give stations at least "
-                "100 m apart");
+        entry + "Fault stations: two stations share a file name (the "
+                "names count 100 m): give stations at least 100 m apart");
     if ((slip_profile[1] - slip_profile[0]) / slip_profile[2] > 1e5)
       throw std::invalid_argument(
         entry + "Slip profile: more than 100000 positions; choose a "
@@ -131,11 +156,15 @@ namespace rsfcycle
 
 
   std::string
-  SeasParameters::fault_station_file(const double x)
+  SeasParameters::fault_station_file(const double x) const
   {
+    const long         units = std::lround(x / 100);
     std::ostringstream name;
-    name << "fltst_dp" << std::setfill('0') << std::setw(3)
-         << std::lround(x / 100);
+    if (strike_names)
+      name << "fltst_strk" << (units < 0 ? '-' : '+') << std::setfill('0')
+           << std::setw(2) << std::labs(units);
+    else
+      name << "fltst_dp" << std::setfill('0') << std::setw(3) << units;
     return name.str();
   }
 

@@ -12,8 +12,11 @@ namespace rsfcycle
   struct SeasParameters
   {
     /** `# problem=` of the headers; empty: no SEAS files. */
-    std::string           problem;
-    std::vector<double>   fault_stations; // along the contact [m]
+    std::string         problem;
+    std::vector<double> fault_stations; // from the origin [m]
+    double              origin = 0;     // along the contact [m]
+    /** fltst_dpXXX (down-dip distance) or fltst_strk+XX (along strike). */
+    bool                  strike_names = false;
     std::array<double, 3> slip_profile{}; // from, to, spacing [m]
     double                profile_interval       = 1.57788e8; // [s]
     double                event_profile_interval = 1;         // [s]
@@ -34,17 +37,19 @@ namespace rsfcycle
 
     /**
      * Checks across entries (throws std::invalid_argument, one line
-     * naming the entry): 2D only, Shear modulus > 0, the profile's range.
+     * naming the entry): 2D only, Shear modulus > 0, the profile's range,
+     * no negative station with down-dip names, distinct file names.
      */
     void
     validate(unsigned int dimension) const;
 
     /**
-     * The file of the fault station at x [m] along the contact:
-     * fltst_dpXXX, XXX = x in units of 100 m (3 digits at least).
+     * The file of the fault station x [m] from the origin: fltst_dpXXX,
+     * XXX = x in units of 100 m (3 digits at least), or with strike names
+     * fltst_strk+XX (signed, 2 digits at least; SEAS BP6).
      */
-    static std::string
-    fault_station_file(double x);
+    std::string
+    fault_station_file(double x) const;
   };
 } // namespace rsfcycle
 

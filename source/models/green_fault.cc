@@ -94,6 +94,20 @@ namespace rsfcycle
                       });
         discretisation.assemble_matrices();
         contact.set_normal_forces(scene.normal_stress());
+        pore_pressure  = scene.pore_pressure();
+        darcy_velocity = scene.darcy_velocity();
+        if (pore_pressure)
+          {
+            std::vector<Point<dim>> positions;
+            std::vector<double>     stresses;
+            for (const auto &node : contact.nodes())
+              {
+                positions.push_back(node.position);
+                stresses.push_back(node.normal_force / node.weight);
+              }
+            all_positions       = la::all_gather(communicator, positions);
+            all_normal_stresses = la::all_gather(communicator, stresses);
+          }
       }
 
       // The radiation damping eta w_k of every node is the diagonal of C on
@@ -237,15 +251,17 @@ namespace rsfcycle
     double
     GreenFault<dim>::slip_rate(const unsigned int k,
                                const double       force,
-                               const double       alpha) const
+                               const double       alpha,
+                               const double       N) const
     {
+      if (!(N > 0))
+        return std::numeric_limits<double>::quiet_NaN();
       const double T = std::abs(force);
       if (T == 0)
         return 0;
       const auto          &node = contact.nodes()[k];
       const auto          &p    = node.params;
       const friction::Law &law  = *parameters.solver.law;
-      const double         N    = node.normal_force;
       const double         c    = damping[k];
       const double         term = law.state_term(p, alpha);
       double               x_hi = std::log(T / c);
@@ -277,19 +293,76 @@ namespace rsfcycle
 
 
     template <int dim>
+    double
+    GreenFault<dim>::normal_force(const unsigned int k, const double t) const
+    {
+      const auto &node = contact.nodes()[k];
+      if (!pore_pressure)
+        return node.normal_force;
+      return node.normal_force - node.weight * pore_pressure(node.position, t);
+    }
+
+
+    template <int dim>
     void
     GreenFault<dim>::slip_rates(const double *s,
                                 const double *alpha,
                                 const double  t,
-                                double       *V) const
+                                double       *V,
+                                double       *alpha_rate) const
     {
       const unsigned int first = op.first_row;
+      const auto        &law   = *parameters.solver.law;
       op.apply(s, force_work.begin());
       for (unsigned int k = 0; k < damping.size(); ++k)
-        V[first + k] = slip_rate(k,
-                                 op.g0[k] + t * op.g1[k] - force_work[k],
-                                 alpha[first + k]);
+        {
+          const unsigned int j = first + k;
+          V[j]                 = slip_rate(k,
+                           op.g0[k] + t * op.g1[k] - force_work[k],
+                           alpha[j],
+                           normal_force(k, t));
+          if (alpha_rate)
+            alpha_rate[j] = law.state_rate(contact.nodes()[k].params,
+                                           alpha[j],
+                                           std::abs(V[j]));
+        }
       gather_in_place(V);
+      if (alpha_rate)
+        gather_in_place(alpha_rate);
+      if (pore_pressure)
+        for (unsigned int j = 0; j < all_positions.size(); ++j)
+          if (!std::isfinite(V[j]))
+            {
+              check_compression(t);
+              break;
+            }
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::check_compression(const double t) const
+    {
+      unsigned int weakest = 0;
+      double       least   = std::numeric_limits<double>::infinity();
+      for (unsigned int j = 0; j < all_positions.size(); ++j)
+        {
+          const double sigma =
+            all_normal_stresses[j] - pore_pressure(all_positions[j], t);
+          if (!(sigma >= least))
+            {
+              least   = sigma;
+              weakest = j;
+            }
+        }
+      if (!(least > 0))
+        throw std::runtime_error(
+          "Mesh file/Friction/Pore pressure: the effective normal stress |sigma_n| - "
+          "p is " +
+          format_number(least) + " Pa at " +
+          format_number(scene.along_base_coordinate(all_positions[weakest])) +
+          " m along the contact at t = " + format_number(t) +
+          " s; rate-and-state friction needs compression (> 0)");
     }
 
 
@@ -314,22 +387,8 @@ namespace rsfcycle
     GreenFault<dim>::ode_rhs(const double t, const Vector &y, Vector &dy) const
     {
       TimerOutput::Scope scope(timer, "Fault right-hand side");
-      // this rank's nodes into their places, then the others' gathered
-      const unsigned int n     = op.n_contact();
-      const unsigned int first = op.first_row;
-      const auto        &law   = *parameters.solver.law;
-      op.apply(y.begin(), force_work.begin());
-      for (unsigned int k = 0; k < damping.size(); ++k)
-        {
-          const double alpha = y[n + first + k];
-          const double V =
-            slip_rate(k, op.g0[k] + t * op.g1[k] - force_work[k], alpha);
-          dy[first + k] = V;
-          dy[n + first + k] =
-            law.state_rate(contact.nodes()[k].params, alpha, std::abs(V));
-        }
-      gather_in_place(dy.begin());
-      gather_in_place(dy.begin() + n);
+      const unsigned int n = op.n_contact();
+      slip_rates(y.begin(), y.begin() + n, t, dy.begin(), dy.begin() + n);
       bool finite = true;
       for (unsigned int j = 0; j < 2 * n; ++j)
         finite = finite && std::isfinite(dy[j]);
@@ -406,6 +465,7 @@ namespace rsfcycle
       const unsigned int  n_own = nodes.size();
       output::Sample      sample;
       std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own);
+      std::vector<double> pressures(n_own), darcy(n_own);
       std::vector<std::array<double, 2>> slip(n_own);
       for (unsigned int k = 0; k < n_own; ++k)
         {
@@ -413,10 +473,18 @@ namespace rsfcycle
           const double alpha = state.alpha[first + k];
           rates[k]           = std::abs(state.rate[first + k]);
           slip[k]            = {{state.slip[first + k], 0.}};
-          stresses[k]        = nodes[k].normal_force / nodes[k].weight *
+          stresses[k]        = normal_force(k, state.t) / nodes[k].weight *
                         law.friction_coefficient(p, alpha, rates[k]);
           log10_states[k] = p.log_theta(alpha) / std::log(10.);
+          if (pore_pressure)
+            pressures[k] = pore_pressure(nodes[k].position, state.t);
+          if (darcy_velocity)
+            darcy[k] = darcy_velocity(nodes[k].position, state.t);
         }
+      if (pore_pressure)
+        sample.pore_pressures = contact.gather(pressures);
+      if (darcy_velocity)
+        sample.darcy_velocities = contact.gather(darcy);
       sample.slip_rates     = contact.gather(rates);
       sample.slip           = contact.gather(slip);
       sample.shear_stresses = contact.gather(stresses);

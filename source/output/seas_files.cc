@@ -17,6 +17,8 @@ namespace rsfcycle
                          const SeasParameters &parameters,
                          const Layout         &layout)
       : parameters(parameters)
+      , pore_pressure(layout.pore_pressure)
+      , darcy_velocity(layout.darcy_velocity)
     {
       if (!layout.lateral_positions.empty())
         throw std::invalid_argument(
@@ -40,9 +42,8 @@ namespace rsfcycle
 
       for (const double x : parameters.fault_stations)
         {
-          stations.push_back(locate(x, "Fault stations"));
-          file_paths.push_back(dir + "/" +
-                               SeasParameters::fault_station_file(x));
+          stations.push_back(locate(parameters.origin + x, "Fault stations"));
+          file_paths.push_back(dir + "/" + parameters.fault_station_file(x));
         }
       for (const auto &name : layout.station_names)
         {
@@ -54,7 +55,8 @@ namespace rsfcycle
       for (long i = 0; i <= static_cast<long>(count); ++i)
         {
           profile_positions.push_back(range[0] + i * range[2]);
-          profile.push_back(locate(profile_positions.back(), "Slip profile"));
+          profile.push_back(locate(parameters.origin + profile_positions.back(),
+                                   "Slip profile"));
         }
       file_paths.push_back(dir + "/global.dat");
       file_paths.push_back(dir + "/slip.dat");
@@ -140,17 +142,30 @@ namespace rsfcycle
         {
           std::ostringstream location;
           location << "on fault, " << parameters.fault_stations[i] / 1e3
-                   << " km along the contact (down-dip distance)";
-          *streams[f]
-            << header(location.str())
-            << "# Column #1 = Time (s)\n"
-               "# Column #2 = Slip (m)\n"
-               "# Column #3 = Slip rate (log10 m/s)\n"
-               "# Column #4 = Shear stress (MPa)\n"
-               "# Column #5 = State (log10 s)\n"
-               "# The line below lists the names of the data fields:\n"
-               "t slip slip_rate shear_stress state\n"
-               "# Here is the time-series data.\n";
+                   << (parameters.strike_names ?
+                         " km along strike" :
+                         " km along the contact (down-dip distance)");
+          std::vector<std::pair<std::string, std::string>> columns = {
+            {"t", "Time (s)"},
+            {"slip", "Slip (m)"},
+            {"slip_rate", "Slip rate (log10 m/s)"},
+            {"shear_stress", "Shear stress (MPa)"}};
+          if (pore_pressure)
+            columns.emplace_back("pore_pressure", "Pore pressure (MPa)");
+          if (darcy_velocity)
+            columns.emplace_back("darcy_vel", "Darcy velocity (m/s)");
+          columns.emplace_back("state", "State (log10 s)");
+          *streams[f] << header(location.str());
+          std::string names;
+          for (unsigned int c = 0; c < columns.size(); ++c)
+            {
+              *streams[f] << "# Column #" << c + 1 << " = " << columns[c].second
+                          << "\n";
+              names += (c ? " " : "") + columns[c].first;
+            }
+          *streams[f] << "# The line below lists the names of the data "
+                         "fields:\n"
+                      << names << "\n# Here is the time-series data.\n";
         }
       for (const auto &name : surface_names)
         *streams[f++]
@@ -193,6 +208,8 @@ namespace rsfcycle
       log10_rate.resize(n);
       stress.resize(n);
       log10_state.resize(n);
+      pressure.resize(pore_pressure ? n : 0);
+      darcy.resize(darcy_velocity ? n : 0);
       double max_rate = 0;
       for (unsigned int i = 0; i < n; ++i)
         {
@@ -203,7 +220,11 @@ namespace rsfcycle
           log10_rate[i]        = std::log10(std::max(V, 1e-300));
           stress[i]            = sample.shear_stresses[k] / 1e6;
           log10_state[i]       = sample.log10_states[k];
-          max_rate             = std::max(max_rate, V);
+          if (pore_pressure)
+            pressure[i] = sample.pore_pressures[k] / 1e6;
+          if (darcy_velocity)
+            darcy[i] = sample.darcy_velocities[k];
+          max_rate = std::max(max_rate, V);
         }
       return std::log10(std::max(max_rate, 1e-300));
     }
@@ -239,8 +260,12 @@ namespace rsfcycle
         {
           row.precise(t) << interpolate(where, slip.data())
                          << interpolate(where, log10_rate.data())
-                         << interpolate(where, stress.data())
-                         << interpolate(where, log10_state.data());
+                         << interpolate(where, stress.data());
+          if (pore_pressure)
+            row << interpolate(where, pressure.data());
+          if (darcy_velocity)
+            row << interpolate(where, darcy.data());
+          row << interpolate(where, log10_state.data());
           row.write_line(*streams[f++]);
         }
       const double factor = parameters.mirror ? 0.5 : 1.;

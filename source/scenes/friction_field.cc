@@ -67,27 +67,47 @@ namespace rsfcycle
          "Radiation damping eta [Pa s/m] on the contact (Solver/Dynamics = "
          "quasi-dynamic: the shear stress eta V is added to the friction), "
          "a function of x, y (and z in 3D) [m]; >= 0. Empty: the shear "
-         "impedance sqrt(G rho) of the material next to the contact"}};
+         "impedance sqrt(G rho) of the material next to the contact"},
+        {"Pore pressure",
+         "",
+         "Pore-fluid pressure p [Pa] on the contact, a function of x, y (and "
+         "z in 3D) [m] and the time t [s] (SEAS BP6: the closed-form "
+         "pressure of a fluid injection): the friction acts on the "
+         "effective normal stress |sigma_n| - p, which must stay > 0 (a run "
+         "where it does not stops, naming the place and the time). Needs "
+         "Normal stress and Solver/Bulk = green-function. Empty: none"},
+        {"Darcy velocity",
+         "",
+         "The pore fluid's Darcy velocity q [m/s] along the contact, a "
+         "function of x, y (and z in 3D) [m] and the time t [s], only "
+         "reported (the SEAS station column darcy_vel; for a pressure p and "
+         "a mobility k / eta_f, q = -(k / eta_f) dp/ds along the contact). "
+         "Needs Pore pressure. Empty: not reported"}};
 
 
     } // namespace
 
 
     template <int dim>
-    std::shared_ptr<const Function<dim>>
+    std::shared_ptr<Function<dim>>
     FrictionField<dim>::parse_expression(const std::string &expression,
-                                         const std::string &entry)
+                                         const std::string &entry,
+                                         const bool         time_dependent)
     {
       {
-        const std::string variables = dim == 2 ? "x,y" : "x,y,z";
-        auto              function  = std::make_shared<FunctionParser<dim>>(1);
+        const std::string variables = std::string(dim == 2 ? "x,y" : "x,y,z") +
+                                      (time_dependent ? ",t" : "");
+        auto function = std::make_shared<FunctionParser<dim>>(1);
         // deal.II writes muparser's diagnosis to std::cerr before it
         // throws: keep it for the one-line message instead
         std::ostringstream diagnosis;
         std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
         try
           {
-            function->initialize(variables, expression, {{"pi", M_PI}}, false);
+            function->initialize(variables,
+                                 expression,
+                                 {{"pi", M_PI}},
+                                 time_dependent);
             // deal.II parses on the first evaluation
             function->value(Point<dim>());
           }
@@ -150,6 +170,26 @@ namespace rsfcycle
         functions.shear_prestress = get("Shear prestress");
       if (!prm.get("Radiation damping").empty())
         functions.radiation_damping = get("Radiation damping");
+      const auto get_of_time = [&](const char *name) {
+        return parse_expression(prm.get(name), section + "/" + name, true);
+      };
+      if (!prm.get("Pore pressure").empty())
+        {
+          if (!functions.normal_stress)
+            throw std::invalid_argument(
+              section + "/Pore pressure = " + prm.get("Pore pressure") +
+              ": needs Normal stress (the effective normal stress is "
+              "Normal stress - Pore pressure)");
+          functions.pore_pressure = get_of_time("Pore pressure");
+        }
+      if (!prm.get("Darcy velocity").empty())
+        {
+          if (!functions.pore_pressure)
+            throw std::invalid_argument(
+              section + "/Darcy velocity = " + prm.get("Darcy velocity") +
+              ": needs Pore pressure");
+          functions.darcy_velocity = get_of_time("Darcy velocity");
+        }
       return FrictionField(functions);
     }
 
@@ -213,6 +253,29 @@ namespace rsfcycle
 
     template <int dim>
     std::optional<double>
+    FrictionField<dim>::pore_pressure(const Point<dim> &x, const double t) const
+    {
+      if (!f.pore_pressure)
+        return {};
+      f.pore_pressure->set_time(t);
+      return f.pore_pressure->value(x);
+    }
+
+
+    template <int dim>
+    std::optional<double>
+    FrictionField<dim>::darcy_velocity(const Point<dim> &x,
+                                       const double      t) const
+    {
+      if (!f.darcy_velocity)
+        return {};
+      f.darcy_velocity->set_time(t);
+      return f.darcy_velocity->value(x);
+    }
+
+
+    template <int dim>
+    std::optional<double>
     FrictionField<dim>::radiation_damping(const Point<dim> &x) const
     {
       return value_if_given(f.radiation_damping, x);
@@ -266,6 +329,13 @@ namespace rsfcycle
         require(true, "Shear prestress", *tau, "finite");
       if (const auto eta = radiation_damping(x))
         require(*eta >= 0, "Radiation damping", *eta, ">= 0");
+      if (const auto p = pore_pressure(x, 0.))
+        require(*p < *normal_stress(x),
+                "Pore pressure",
+                *p,
+                "finite and below Normal stress at t = 0");
+      if (const auto q = darcy_velocity(x, 0.))
+        require(true, "Darcy velocity", *q, "finite at t = 0");
     }
 
 

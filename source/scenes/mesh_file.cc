@@ -9,7 +9,6 @@
 #include <rsfcycle/ids.h>
 #include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/mesh_file_input.h>
-#include <rsfcycle/seas_parameters.h>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -121,42 +120,6 @@ namespace rsfcycle
                    " lies outside the mesh");
           observation.emplace_back(name, p);
         }
-    }
-
-
-    /**
-     * The SEAS fault stations and slip profile (`Output/SEAS`) on the
-     * contact's along-base extent of the coarse mesh, before the run folder
-     * is made (SeasFiles checks them again against the contact nodes of the
-     * refined mesh, which leave out vertices shared with a load).
-     */
-    template <int dim>
-    void
-    MeshFile<dim>::check_seas_positions(ParameterHandler &prm) const
-    {
-      SeasParameters seas;
-      prm.enter_subsection("Output");
-      seas.parse_parameters(prm);
-      prm.leave_subsection();
-      if (!seas.enabled())
-        return;
-      double length = 0;
-      for (const auto &face : coarse.active_face_iterators())
-        if (face->at_boundary() && face->boundary_id() == boundary_id::contact)
-          for (const unsigned int v : face->vertex_indices())
-            length = std::max(length, along_base_coordinate(face->vertex(v)));
-      const auto check = [length](const double x, const std::string &entry) {
-        if (x < -1e-9 * length || x > length * (1 + 1e-9))
-          throw std::invalid_argument("Output/SEAS/" + entry + ": " +
-                                      format_number(x) +
-                                      " m lies outside the contact "
-                                      "(along-base coordinates 0 ... " +
-                                      format_number(length) + " m)");
-      };
-      for (const double x : seas.fault_stations)
-        check(x, "Fault stations");
-      check(seas.slip_profile[0], "Slip profile");
-      check(seas.slip_profile[1], "Slip profile");
     }
 
 
@@ -500,6 +463,30 @@ namespace rsfcycle
         return {};
       return [this](const Point<dim> &p) {
         return *friction_field->normal_stress(to_physical(p));
+      };
+    }
+
+
+    template <int dim>
+    std::function<double(const Point<dim> &, double)>
+    MeshFile<dim>::pore_pressure() const
+    {
+      if (!friction_field->functions().pore_pressure)
+        return {};
+      return [this](const Point<dim> &p, const double t) {
+        return *friction_field->pore_pressure(to_physical(p), t);
+      };
+    }
+
+
+    template <int dim>
+    std::function<double(const Point<dim> &, double)>
+    MeshFile<dim>::darcy_velocity() const
+    {
+      if (!friction_field->functions().darcy_velocity)
+        return {};
+      return [this](const Point<dim> &p, const double t) {
+        return *friction_field->darcy_velocity(to_physical(p), t);
       };
     }
 

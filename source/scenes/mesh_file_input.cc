@@ -1,8 +1,10 @@
 #include <deal.II/base/utilities.h>
 #include <limits>
 #include <rsfcycle/format.h>
+#include <rsfcycle/ids.h>
 #include <rsfcycle/scenes/mesh_file.h>
 #include <rsfcycle/scenes/mesh_file_input.h>
+#include <rsfcycle/seas_parameters.h>
 #include <set>
 #include <stdexcept>
 
@@ -233,9 +235,52 @@ namespace rsfcycle
     }
 
 
+    /**
+     * The SEAS fault stations and slip profile (`Output/SEAS`) on the
+     * contact's along-base extent of the coarse mesh, before the run folder
+     * is made (SeasFiles checks them again against the contact nodes of the
+     * refined mesh, which leave out vertices shared with a load).
+     */
+    template <int dim>
+    void
+    MeshFile<dim>::check_seas_positions(ParameterHandler &prm) const
+    {
+      SeasParameters seas;
+      prm.enter_subsection("Output");
+      seas.parse_parameters(prm);
+      prm.leave_subsection();
+      if (!seas.enabled())
+        return;
+      double length = 0;
+      for (const auto &face : coarse.active_face_iterators())
+        if (face->at_boundary() && face->boundary_id() == boundary_id::contact)
+          for (const unsigned int v : face->vertex_indices())
+            length = std::max(length, along_base_coordinate(face->vertex(v)));
+      const auto check = [&](const double x, const std::string &entry) {
+        const double s = seas.origin + x;
+        if (s < -1e-9 * length || s > length * (1 + 1e-9))
+          throw std::invalid_argument(
+            "Output/SEAS/" + entry + ": " + format_number(x) + " m" +
+            (seas.origin != 0 ?
+               " from the origin " + format_number(seas.origin) + " m" :
+               "") +
+            " lies outside the contact (along-base coordinates 0 ... " +
+            format_number(length) + " m)");
+      };
+      for (const double x : seas.fault_stations)
+        check(x, "Fault stations");
+      check(seas.slip_profile[0], "Slip profile");
+      check(seas.slip_profile[1], "Slip profile");
+    }
+
+
     template void
     MeshFile<2>::declare_parameters(ParameterHandler &);
     template void
     MeshFile<3>::declare_parameters(ParameterHandler &);
+    template void
+    MeshFile<2>::check_seas_positions(ParameterHandler &) const;
+    template void
+    MeshFile<3>::check_seas_positions(ParameterHandler &) const;
   } // namespace scenes
 } // namespace rsfcycle

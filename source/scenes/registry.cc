@@ -72,6 +72,11 @@ namespace rsfcycle
         {
           if (green_function())
             models::GreenFault<dim>::check(parameters, *scene);
+          else if (scene->pore_pressure())
+            throw std::invalid_argument(
+              "Mesh file/Friction/Pore pressure: needs Solver/Bulk = green-function "
+              "(the volume method keeps the normal stress constant in "
+              "time)");
         }
 
         /** green-function: the model and its operator (it may refuse). */

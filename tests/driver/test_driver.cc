@@ -83,10 +83,9 @@ namespace
            "shear stress [MPa], log10 theta\n";
     for (const double x : parameters.output.seas.fault_stations)
       {
-        const std::string name =
-          rsfcycle::SeasParameters::fault_station_file(x);
-        const auto rows = read_seas(dir + name);
-        const auto last = rows.back();
+        const std::string name = parameters.output.seas.fault_station_file(x);
+        const auto        rows = read_seas(dir + name);
+        const auto        last = rows.back();
         out << name << " " << rows.size() << "; " << last[0] << " "
             << last[1] * 1e6 << " " << last[2] << " " << last[3] << " "
             << last[4] << "\n";

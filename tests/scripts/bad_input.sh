@@ -123,6 +123,23 @@ check_bp1 green-dashpots "dashpots" 'subsection Mesh file\nset Boundary roles = 
 check green-gravity "Normal stress" 'subsection Solver\nset Dynamics = quasi-dynamic\nset Bulk = green-function\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend'
 check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset Integrator = runge-kutta\nend'
 
+# A pore pressure (SEAS BP6): only with the Green's functions, only with a
+# prescribed normal stress below it, a Darcy velocity only with it, the
+# SEAS down-dip station names only at positions >= 0.
+check_bp6() { # name, expected word, prm body (appended after the include)
+  local name=$1 word=$2 body=$3
+  printf 'include %s/prm/seas-bp6-qd-a.prm\nset Output directory = run-%s\n%b\n' \
+    "$src" "$name" "$body" > "$name.prm"
+  check_file "$name" "$word"
+}
+check_bp6 pore-pressure-volume "Pore pressure: needs Solver/Bulk = green-function" 'subsection Time stepping\nset Integrator = implicit\nend\nsubsection Solver\nset Bulk = volume\nend'
+check_bp6 pore-pressure-sigma "Pore pressure = 6e+07" 'subsection Mesh file\nsubsection Friction\nset Pore pressure = 60e6\nend\nend'
+check_bp6 pore-pressure-gravity "Pore pressure" 'subsection Mesh file\nsubsection Friction\nset Normal stress =\nend\nend'
+check_bp6 pore-pressure-syntax "Friction/Pore pressure" 'subsection Mesh file\nsubsection Friction\nset Pore pressure = 1e6 * tau\nend\nend'
+check_bp6 darcy-without-pressure "Darcy velocity" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nend\nend'
+check_bp6 seas-negative-down-dip "Fault stations: -1500 m is negative" 'subsection Output\nsubsection SEAS\nset Fault station names = down-dip\nend\nend'
+check_bp6 seas-origin "Fault stations: 7500 m from the origin 35000" 'subsection Output\nsubsection SEAS\nset Fault station origin = 35e3\nend\nend'
+
 # missing parameter file
 "$exe" no-such-file.prm > /dev/null 2> missing.err
 if [ $? -ne 0 ] && [ "$(wc -l < missing.err)" -eq 1 ] && grep -q "no-such-file.prm" missing.err

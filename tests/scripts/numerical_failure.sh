@@ -33,5 +33,17 @@ run_case tnnmg 'subsection Solver\nset Maximum TNNMG iterations = 1\nset Inner t
 [ -f tnnmg/checkpoint.bin ] || { n_fail=$((n_fail + 1)); echo "FAILED: no checkpoint"; }
 run_case overflow 'subsection Wedge\nset Bulk modulus = 1e308\nend' \
   "non-finite entries"
+# A pore pressure that overtakes the normal stress during a run (BP6 with
+# a tenth of its normal stress, 200 m cells): stopped with the place and
+# the time, exit status 1.
+printf 'include %s/prm/seas-bp6-qd-a.prm\nset Output directory = pore-pressure\nsubsection Mesh\nset Local refinements = 3\nend\nsubsection Mesh file\nsubsection Friction\nset Normal stress = 5e6\nset Shear prestress = 2.92e6\nset Initial state = 0.004 / 1e-6 * exp(0.007 / 0.005 * ln(2e-6 / 1e-12 * sinh(2.92e6 / (0.007 * 5e6))) - 0.6 / 0.005)\nend\nend\n' "$src" > pore-pressure.prm
+"$exe" pore-pressure.prm > pore-pressure.log 2>&1
+status=$?
+if [ $status -eq 1 ] && grep -q "^rsfcycle: error: Mesh file/Friction/Pore pressure: the effective normal stress .* m along the contact at t = " pore-pressure.log; then
+  n_pass=$((n_pass + 1))
+else
+  n_fail=$((n_fail + 1)); echo "FAILED pore-pressure (exit $status)"; tail -5 pore-pressure.log
+fi
+grep "^rsfcycle: error" pore-pressure.log
 echo "numerical failures: $n_pass passed, $n_fail failed"
 [ $n_fail -eq 0 ]

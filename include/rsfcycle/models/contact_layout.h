@@ -43,6 +43,8 @@ namespace rsfcycle
         }
       layout.convergence_rate        = scene.convergence_rate();
       layout.interpolate_event_times = true;
+      layout.pore_pressure           = bool(scene.pore_pressure());
+      layout.darcy_velocity          = bool(scene.darcy_velocity());
       return layout;
     }
   } // namespace models

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
+#include <functional>
 #include <ostream>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/contact_quadrature.h>
@@ -109,9 +110,19 @@ namespace rsfcycle
         return contact;
       }
 
-      /** The slip rate of node k at the force F and state alpha. */
+      /**
+       * The slip rate of node k at the force F, state alpha and normal
+       * force N (NaN if N <= 0).
+       */
       double
-      slip_rate(unsigned int k, double force, double alpha) const;
+      slip_rate(unsigned int k, double force, double alpha, double N) const;
+
+      /**
+       * The normal force of node k at time t [N/m^(3-dim)]: w_k (|sigma_n|
+       * - p(x_k, t)) with a pore pressure, else constant.
+       */
+      double
+      normal_force(unsigned int k, double t) const;
 
       /** @name The time::Model interface */
       /** @{ */
@@ -157,12 +168,26 @@ namespace rsfcycle
       void
       gather_in_place(double *values) const;
 
-      /** The slip rates of all nodes at the slip s and time t. */
+      /**
+       * The slip rates of all nodes at the slip s and time t (and, if
+       * `alpha_rate` is given, the state rates); throws
+       * std::runtime_error, on every rank, if the pore pressure leaves a
+       * node without compression.
+       */
       void
       slip_rates(const double *s,
                  const double *alpha,
                  double        t,
-                 double       *V) const;
+                 double       *V,
+                 double       *alpha_rate = nullptr) const;
+
+      /**
+       * After non-finite rates at t: throw, naming the place, if a pore
+       * pressure left a node without compression (every rank finds the
+       * same node: the positions and stresses of all nodes are kept).
+       */
+      void
+      check_compression(double t) const;
 
       const Parameters            &parameters;
       const physics::Scene<dim>   &scene;
@@ -188,8 +213,17 @@ namespace rsfcycle
       double compression_error = 0;
       /** Per node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
-      State               initial;
-      mutable Vector      force_work;
+      /** The scene's pore pressure and Darcy velocity (empty: none). */
+      std::function<double(const Point<dim> &, double)> pore_pressure,
+        darcy_velocity;
+      /**
+       * With a pore pressure: every node's position and |sigma_n| (all
+       * ranks' nodes, for check_compression()).
+       */
+      std::vector<Point<dim>> all_positions;
+      std::vector<double>     all_normal_stresses;
+      State                   initial;
+      mutable Vector          force_work;
     };
   } // namespace models
 } // namespace rsfcycle

@@ -31,6 +31,10 @@ namespace rsfcycle
       std::vector<double> log10_states;
       /** The time derivatives of the observations (body models). */
       std::vector<double> observation_rates;
+      /** With Layout::pore_pressure: p of every node [Pa]. */
+      std::vector<double> pore_pressures;
+      /** With Layout::darcy_velocity: q of every node [m/s]. */
+      std::vector<double> darcy_velocities;
     };
 
     /**
@@ -54,6 +58,8 @@ namespace rsfcycle
       std::vector<std::string> station_names;
       double                   convergence_rate        = 1;
       bool                     interpolate_event_times = false;
+      /** Whether samples carry pore pressures and Darcy velocities. */
+      bool pore_pressure = false, darcy_velocity = false;
     };
   } // namespace output
 } // namespace rsfcycle

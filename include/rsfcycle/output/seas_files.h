@@ -23,7 +23,9 @@ namespace rsfcycle
      *  - fltst_dpXXX, one per fault station at the along-contact position
      *    XXX x 100 m: t slip slip_rate shear_stress state (s, m, log10 m/s,
      *    MPa, log10 s), every accepted step, linear between the two nodes
-     *    around the station;
+     *    around the station; with a pore fluid (SEAS BP6) also
+     *    pore_pressure (MPa) and darcy_vel (m/s) before state, and with
+     *    strike names fltst_strk+XX, XX from `Fault station origin`;
      *  - srfst_NAME, one per observation point NAME: t disp vel (m, m/s);
      *  - global.dat: t max_slip_rate moment_rate (s, log10 m/s, N/s per
      *    metre along strike: G int V ds with the entry Shear modulus);
@@ -136,7 +138,10 @@ namespace rsfcycle
       std::vector<std::string>   file_paths;
       std::vector<std::unique_ptr<std::ofstream>> streams;
       CsvRow                                      row{10, ' '};
+      /** The station columns pore_pressure and darcy_vel (SEAS BP6). */
+      const bool          pore_pressure, darcy_velocity;
       std::vector<double> slip, rate, log10_rate, stress, log10_state; // sorted
+      std::vector<double> pressure, darcy; // sorted, [MPa], [m/s]
     };
   } // namespace output
 } // namespace rsfcycle

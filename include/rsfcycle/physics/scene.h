@@ -140,6 +140,29 @@ namespace rsfcycle
       }
 
       /**
+       * The pore-fluid pressure p [Pa] on the contact as a function of the
+       * point (rotated frame) and the time [s]: the friction acts on the
+       * effective normal stress |sigma_n| - p. An empty function (the
+       * default): none.
+       */
+      virtual std::function<double(const Point<dim> &, double)>
+      pore_pressure() const
+      {
+        return {};
+      }
+
+      /**
+       * The pore fluid's Darcy velocity [m/s] along the contact at a point
+       * (rotated frame) and time [s], only reported. An empty function (the
+       * default): none.
+       */
+      virtual std::function<double(const Point<dim> &, double)>
+      darcy_velocity() const
+      {
+        return {};
+      }
+
+      /**
        * A shear traction on the body at the contact, constant in time
        * [Pa], as a vector of the rotated frame at a point of the contact:
        * the part of the fault's shear stress that is not from the body's

@@ -45,6 +45,10 @@ namespace rsfcycle
         std::shared_ptr<const Function<dim>> shear_prestress;
         /** eta [Pa s/m]; null: sqrt(G rho) of the material. */
         std::shared_ptr<const Function<dim>> radiation_damping;
+        /** p(x, t) [Pa], time-dependent; null: none. */
+        std::shared_ptr<Function<dim>> pore_pressure;
+        /** q(x, t) [m/s], time-dependent, reported only; null: none. */
+        std::shared_ptr<Function<dim>> darcy_velocity;
       };
 
       explicit FrictionField(Functions functions);
@@ -65,11 +69,14 @@ namespace rsfcycle
       parse(ParameterHandler &prm, const std::string &section);
 
       /**
-       * A muparser expression of the coordinates x, y (z), checked once;
-       * a malformed one throws std::invalid_argument naming `entry`.
+       * A muparser expression of the coordinates x, y (z), and with
+       * `time_dependent` of the time t (Function::set_time()), checked
+       * once; a malformed one throws std::invalid_argument naming `entry`.
        */
-      static std::shared_ptr<const Function<dim>>
-      parse_expression(const std::string &expression, const std::string &entry);
+      static std::shared_ptr<Function<dim>>
+      parse_expression(const std::string &expression,
+                       const std::string &entry,
+                       bool               time_dependent = false);
 
       /** Parameters and cohesion at x. */
       friction::Parameters
@@ -93,6 +100,14 @@ namespace rsfcycle
       /** The shear prestress tau_0 at x; none: no prestress. */
       std::optional<double>
       shear_prestress(const Point<dim> &x) const;
+
+      /** The pore pressure p at x and time t [Pa]; none: no pore fluid. */
+      std::optional<double>
+      pore_pressure(const Point<dim> &x, double t) const;
+
+      /** The Darcy velocity at x and time t [m/s]; none: not given. */
+      std::optional<double>
+      darcy_velocity(const Point<dim> &x, double t) const;
 
       /** The prescribed radiation damping at x; none: the material's. */
       std::optional<double>

@@ -73,6 +73,10 @@ namespace rsfcycle
       normal_stress() const override;
       std::function<Tensor<1, dim>(const Point<dim> &)>
       shear_prestress() const override;
+      std::function<double(const Point<dim> &, double)>
+      pore_pressure() const override;
+      std::function<double(const Point<dim> &, double)>
+      darcy_velocity() const override;
       double
       radiation_damping(const Point<dim> &p,
                         const Material   &material) const override;

@@ -69,7 +69,7 @@ def summarise(folder, threshold):
         slip = d[:, col["slip"]]
         log_v = d[:, col["slip_rate"]]
         peak = int(np.argmax(log_v))
-        result["stations"][os.path.basename(path)] = {
+        result["stations"][os.path.basename(path).replace(".dat", "")] = {
             "slip": [at(s, t, slip) * 1e3 for s in SLIP_TIMES],
             "peak": (10 ** log_v[peak], t[peak] / DAY),
         }

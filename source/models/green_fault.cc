@@ -207,6 +207,11 @@ namespace rsfcycle
                           parameters.solver.green_compression_tolerance),
               communicator);
           }
+        // what the run keeps of S on the rank that keeps most
+        operator_megabytes = Utilities::MPI::max(
+          8e-6 * (op.compressed ? double(op.compressed->stored_entries()) :
+                                  double(op.n_rows()) * op.n_contact()),
+          communicator);
       }
 
       // The initial slip is the volume path's: the tangential displacement
@@ -542,6 +547,8 @@ namespace rsfcycle
             Utilities::MPI::n_mpi_processes(communicator);
           ranks > 1)
         log << " (" << op.n_rows() << " rows on rank 0 of " << ranks << ")";
+      log << ", " << format_number(operator_megabytes)
+          << " MB on the rank that holds most";
       log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())
         log << "from a Cholesky factor of " << op.n_interior << " unknowns and "

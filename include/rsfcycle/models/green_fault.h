@@ -211,6 +211,8 @@ namespace rsfcycle
       std::uint32_t fingerprint = 0;
       /** The H-matrix product's relative error on two test slips. */
       double compression_error = 0;
+      /** The memory of S during the run, the largest over the ranks [MB]. */
+      double operator_megabytes = 0;
       /** Per node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
       /** The scene's pore pressure and Darcy velocity (empty: none). */

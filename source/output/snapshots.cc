@@ -144,7 +144,8 @@ namespace rsfcycle
       const double                                 convergence_rate,
       const std::pair<Tensor<2, dim>, Point<dim>> &frame,
       const OutputParameters                      &output,
-      TimerOutput                                 &timer)
+      TimerOutput                                 &timer,
+      std::function<BodyState(const Record &)>     body)
       : dir(dir)
       , discretisation(discretisation)
       , contact(contact)
@@ -154,14 +155,26 @@ namespace rsfcycle
       , interval(output.output_interval)
       , event_interval(output.event_output_interval)
       , timer(timer)
+      , body(std::move(body))
     {}
+
+
+    template <int dim>
+    const BodyState &
+    SnapshotWriter<dim>::body_of(const Record &record)
+    {
+      if (!body)
+        return record.state_as<BodyState>();
+      made = body(record);
+      return made;
+    }
 
 
     template <int dim>
     void
     SnapshotWriter<dim>::start(const Record &record)
     {
-      write_snapshot(record.state_as<BodyState>(), record.t);
+      write_snapshot(body_of(record), record.t);
     }
 
 
@@ -174,7 +187,7 @@ namespace rsfcycle
           last_output +
             (record.events->in_event() ? event_interval : interval) - eps)
         {
-          write_snapshot(record.state_as<BodyState>(), record.t);
+          write_snapshot(body_of(record), record.t);
           last_output = record.t;
         }
     }
@@ -185,7 +198,7 @@ namespace rsfcycle
     SnapshotWriter<dim>::finish(const Record &record)
     {
       if (last_time() < record.t)
-        write_snapshot(record.state_as<BodyState>(), record.t);
+        write_snapshot(body_of(record), record.t);
     }
 
 
@@ -232,7 +245,8 @@ namespace rsfcycle
             law.friction_coefficient(info.params, state.alpha[k], rates[k]);
           field[traction].local_element(dof) = state.shear_traction[k];
           field[normal_stress].local_element(dof) =
-            info.normal_force / info.weight;
+            state.normal_stress.empty() ? info.normal_force / info.weight :
+                                          state.normal_stress[k];
           field[rate_minus_v0].local_element(dof) = rates[k] - v0;
           field[slip_um].local_element(dof) =
             1e6 *

@@ -6,11 +6,14 @@
 #include <deal.II/base/timer.h>
 #include <functional>
 #include <ostream>
+#include <rsfcycle/output/writer.h>
 #include <rsfcycle/parameters.h>
+#include <rsfcycle/physics/body_state.h>
 #include <rsfcycle/physics/contact_quadrature.h>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/green_operator.h>
 #include <rsfcycle/physics/scene.h>
+#include <rsfcycle/physics/static_solver.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/ode_model.h>
 #include <string>
@@ -57,7 +60,8 @@ namespace rsfcycle
      * its own; the rates are gathered after each right-hand side, so
      * ARKODE takes the same steps on every rank. The
      * simulator integrates it with `Time stepping/Integrator =
-     * runge-kutta` and writes the same files as the volume path (no VTU).
+     * runge-kutta` and writes the same files as the volume path, the VTU
+     * snapshots from a static solve of the body at each output time.
      */
     template <int dim>
     class GreenFault : public time::Model<FaultState>,
@@ -110,6 +114,13 @@ namespace rsfcycle
         return contact;
       }
 
+      /** The mesh, dofs and matrices of the body (body()'s numbering). */
+      const physics::Discretisation<dim> &
+      body_discretisation() const
+      {
+        return discretisation;
+      }
+
       /**
        * The slip rate of node k at the force F, state alpha and normal
        * force N (NaN if N <= 0).
@@ -139,7 +150,24 @@ namespace rsfcycle
       checkpoint_identity() const override;
       void
       describe(std::ostream &log) const override;
+      /**
+       * With `Output/Write VTU`: the VTU snapshots of the volume path
+       * (output::SnapshotWriter), the body's displacement and velocity at
+       * each output time from one static solve each with the contact held
+       * at the slip and the slip rate (body()).
+       */
+      std::vector<std::unique_ptr<output::Writer>>
+      writers() override;
       /** @} */
+
+      /**
+       * The whole body at a state: u and v of the static equilibrium with
+       * the contact's tangential dofs at the slip and the slip rate and
+       * the load boundaries at V t and V, the friction state and traction
+       * of this rank's nodes.
+       */
+      BodyState
+      body(const State &state) const;
 
       /** @name The time::OdeModel interface */
       /** @{ */
@@ -224,8 +252,10 @@ namespace rsfcycle
        */
       std::vector<Point<dim>> all_positions;
       std::vector<double>     all_normal_stresses;
-      State                   initial;
-      mutable Vector          force_work;
+      /** The static solves of body() (made at its first call). */
+      mutable std::unique_ptr<physics::StaticSolver<dim>> static_solver;
+      State                                               initial;
+      mutable Vector                                      force_work;
     };
   } // namespace models
 } // namespace rsfcycle

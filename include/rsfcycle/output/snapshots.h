@@ -2,6 +2,7 @@
 #define rsfcycle_output_snapshots_h
 
 #include <deal.II/base/timer.h>
+#include <functional>
 #include <rsfcycle/friction/law.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/output/writer.h>
@@ -41,7 +42,8 @@ namespace rsfcycle
         double                                 convergence_rate,
         const std::pair<dealii::Tensor<2, dim>, dealii::Point<dim>> &frame,
         const OutputParameters                                      &output,
-        dealii::TimerOutput                                         &timer);
+        dealii::TimerOutput                                         &timer,
+        std::function<BodyState(const Record &)>                     body = {});
 
       std::string
       name() const override
@@ -64,6 +66,13 @@ namespace rsfcycle
       load(boost::archive::binary_iarchive &archive) override;
 
     private:
+      /**
+       * The body of a record: its state, or what `body` makes of the
+       * record (a model whose state is not a BodyState).
+       */
+      const BodyState &
+      body_of(const Record &record);
+
       /** Write the snapshot of the state at time t. */
       void
       write_snapshot(const BodyState &state, double t);
@@ -101,7 +110,9 @@ namespace rsfcycle
       /** Simulated time between snapshots, outside and during events. */
       const double interval, event_interval;
       /** Times the snapshots in the section "Output". */
-      dealii::TimerOutput &timer;
+      dealii::TimerOutput                           &timer;
+      const std::function<BodyState(const Record &)> body;
+      BodyState                                      made; // by body
 
       std::vector<std::pair<double, std::string>> records, fault_records;
       unsigned int                                n_snapshots = 0;

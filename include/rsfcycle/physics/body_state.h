@@ -21,6 +21,12 @@ namespace rsfcycle
     std::vector<double> alpha;
     std::vector<double> shear_traction; // |friction force| / w per node [Pa]
     solvers::StepStatistics statistics;
+    /**
+     * The effective normal stress per node where it changes in time (a
+     * pore pressure) [Pa]; empty: the contact's constant one. Made for
+     * the output, not kept in checkpoints.
+     */
+    std::vector<double> normal_stress;
 
     template <class Archive>
     void

@@ -1,0 +1,206 @@
+// The outputs of the quasi-dynamic fault with the bulk's Green's functions
+// (models/green_fault.h): its layout and samples for the writers, the VTU
+// snapshots of the whole body, the description in log.txt.
+#include <cmath>
+#include <rsfcycle/format.h>
+#include <rsfcycle/models/contact_layout.h>
+#include <rsfcycle/models/green_fault.h>
+#include <rsfcycle/output/snapshots.h>
+
+namespace rsfcycle
+{
+  namespace models
+  {
+    template <int dim>
+    output::Layout
+    GreenFault<dim>::layout() const
+    {
+      return contact_layout(scene, contact);
+    }
+
+
+    template <int dim>
+    output::Sample
+    GreenFault<dim>::sample(const State &state) const
+    {
+      // this rank's nodes (from first_row in the state of all nodes)
+      const unsigned int  first = op.first_row;
+      const unsigned int  n     = state.slip.size();
+      const auto         &law   = *parameters.solver.law;
+      const auto         &nodes = contact.nodes();
+      const unsigned int  n_own = nodes.size();
+      output::Sample      sample;
+      std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own);
+      std::vector<double> pressures(n_own), darcy(n_own);
+      std::vector<std::array<double, 2>> slip(n_own);
+      for (unsigned int k = 0; k < n_own; ++k)
+        {
+          const auto  &p     = nodes[k].params;
+          const double alpha = state.alpha[first + k];
+          rates[k]           = std::abs(state.rate[first + k]);
+          slip[k]            = {{state.slip[first + k], 0.}};
+          stresses[k]        = normal_force(k, state.t) / nodes[k].weight *
+                        law.friction_coefficient(p, alpha, rates[k]);
+          log10_states[k] = p.log_theta(alpha) / std::log(10.);
+          if (pore_pressure)
+            pressures[k] = pore_pressure(nodes[k].position, state.t);
+          if (darcy_velocity)
+            darcy[k] = darcy_velocity(nodes[k].position, state.t);
+        }
+      if (pore_pressure)
+        sample.pore_pressures = contact.gather(pressures);
+      if (darcy_velocity)
+        sample.darcy_velocities = contact.gather(darcy);
+      sample.slip_rates     = contact.gather(rates);
+      sample.slip           = contact.gather(slip);
+      sample.shear_stresses = contact.gather(stresses);
+      sample.log10_states   = contact.gather(log10_states);
+      for (unsigned int p = 0; p < op.O.m(); ++p)
+        {
+          double u = op.o0[p] + state.t * op.o1[p], v = op.o1[p];
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              u += op.O(p, k) * state.slip[k];
+              v += op.O(p, k) * state.rate[k];
+            }
+          sample.observations.push_back(u);
+          sample.observation_rates.push_back(v);
+        }
+      return sample;
+    }
+
+
+    template <int dim>
+    std::vector<std::unique_ptr<output::Writer>>
+    GreenFault<dim>::writers()
+    {
+      std::vector<std::unique_ptr<output::Writer>> list;
+      if (!parameters.output.write_vtu)
+        return list;
+      list.push_back(std::make_unique<output::SnapshotWriter<dim>>(
+        parameters.run.output_directory,
+        discretisation,
+        contact,
+        *parameters.solver.law,
+        scene.convergence_rate(),
+        scene.output_frame(),
+        parameters.output,
+        timer,
+        [this](const output::Record &record) {
+          return body(record.state_as<State>());
+        }));
+      return list;
+    }
+
+
+    template <int dim>
+    BodyState
+    GreenFault<dim>::body(const State &state) const
+    {
+      TimerOutput::Scope scope(timer, "Output");
+      const unsigned int first = op.first_row;
+      const auto        &nodes = contact.contact_set().nodes;
+      const auto        &law   = *parameters.solver.law;
+      BodyState          b;
+      discretisation.reinit(b.u);
+      discretisation.reinit(b.v);
+      discretisation.reinit(b.a);
+      // the load boundaries at V t (the load velocity is constant: check())
+      discretisation.set_fixed_values(b.v, state.t);
+      for (const auto &[i, component] : discretisation.backstop_dofs)
+        b.u.local_element(i) = state.t * b.v.local_element(i);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          b.u.local_element(nodes[k].dofs[0]) = state.slip[first + k];
+          b.v.local_element(nodes[k].dofs[0]) = state.rate[first + k];
+          const auto  &node                   = contact.nodes()[k];
+          const double alpha                  = state.alpha[first + k];
+          const double V                      = std::abs(state.rate[first + k]);
+          b.alpha.push_back(alpha);
+          if (pore_pressure)
+            b.normal_stress.push_back(normal_force(k, state.t) / node.weight);
+          b.shear_traction.push_back(
+            normal_force(k, state.t) / node.weight *
+            law.friction_coefficient(node.params, alpha, V));
+        }
+      if (!static_solver)
+        {
+          std::vector<unsigned int> dofs;
+          for (const auto &node : nodes)
+            dofs.push_back(node.dofs[0]);
+          static_solver =
+            std::make_unique<physics::StaticSolver<dim>>(discretisation, dofs);
+        }
+      static_solver->solve(b.u, &discretisation.body_force);
+      static_solver->solve(b.v);
+      return b;
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::describe(std::ostream &log) const
+    {
+      const auto &tria = discretisation.triangulation;
+      log << "Scene: " << parameters.run.scene << " (" << dim << "D"
+          << (parameters.run.antiplane ? ", antiplane" : "") << ")\n"
+          << "Mesh: " << tria.n_global_active_cells() << " cells, "
+          << tria.n_global_levels() << " levels, "
+          << discretisation.dof_handler.n_dofs() << " unknowns, "
+          << contact.n_global_nodes() << " contact nodes\n"
+          << "Bulk: green-function, operator " << op.n_contact() << " x "
+          << op.n_contact();
+      if (op.compressed)
+        log << " as an H-matrix (tolerance "
+            << parameters.solver.green_compression_tolerance << ": "
+            << format_number(100. * op.compressed->stored_entries() /
+                             (double(op.n_rows()) * op.n_contact()))
+            << " % of the dense numbers, " << op.compressed->n_low_rank_blocks()
+            << " low-rank and " << op.compressed->n_dense_blocks()
+            << " dense blocks, product error " << compression_error << ")";
+      else
+        log << " dense";
+      if (const unsigned int ranks =
+            Utilities::MPI::n_mpi_processes(communicator);
+          ranks > 1)
+        log << " (" << op.n_rows() << " rows on rank 0 of " << ranks << ")";
+      log << ", " << format_number(operator_megabytes)
+          << " MB on the rank that holds most";
+      log << ", " << op.O.m() << " observation rows ";
+      if (operator_source.empty())
+        log << "from a Cholesky factor of " << op.n_interior << " unknowns and "
+            << op.n_blocks << " block solves";
+      else
+        log << "read from " << operator_source;
+      log << " (set-up " << format_number(setup_seconds) << " s)\n"
+          << "Solver: " << parameters.solver.law->name() << " law, "
+          << name_of(parameters.solver.dynamics)
+          << ", the fault's ODE by explicit Dormand-Prince 5(4) (ARKODE), "
+             "relative tolerance "
+          << parameters.time_stepping.tolerance << std::endl;
+    }
+
+
+    // (the class is instantiated in green_fault.cc; these members here)
+    template output::Layout
+    GreenFault<2>::layout() const;
+    template output::Sample
+    GreenFault<2>::sample(const State &) const;
+    template std::vector<std::unique_ptr<output::Writer>>
+    GreenFault<2>::writers();
+    template BodyState
+    GreenFault<2>::body(const State &) const;
+    template void
+    GreenFault<2>::describe(std::ostream &) const;
+    template output::Layout
+    GreenFault<3>::layout() const;
+    template output::Sample
+    GreenFault<3>::sample(const State &) const;
+    template std::vector<std::unique_ptr<output::Writer>>
+    GreenFault<3>::writers();
+    template BodyState
+    GreenFault<3>::body(const State &) const;
+    template void
+    GreenFault<3>::describe(std::ostream &) const;
+  } // namespace models
+} // namespace rsfcycle

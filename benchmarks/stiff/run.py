@@ -32,11 +32,22 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 ARGS = sys.argv[1:]
+TIMEOUT = 60  # wall-clock limit per case [s]
 EXE = (ARGS.pop(0) if ARGS and not ARGS[0].startswith("-") and
        os.path.isfile(ARGS[0]) else os.path.join(ROOT, "build", "rsfcycle"))
+# --integrator runge-kutta: every case with ARKODE's explicit Dormand-Prince
+# 5(4) on the model's ODE instead of the implicit step (results-runge-kutta.csv
+# and the second table of README.md)
+INTEGRATOR = "implicit"
+if "--integrator" in ARGS:
+    i = ARGS.index("--integrator")
+    INTEGRATOR = ARGS[i + 1]
+    del ARGS[i:i + 2]
 ONLY = set(ARGS)  # case names to run (default: all)
+# (an explicit method that crawls writes a row per step: ten seconds show it)
+if INTEGRATOR == "runge-kutta":
+    TIMEOUT = 10
 WORK = os.path.join(HERE, "runs")
-TIMEOUT = 60  # wall-clock limit per case [s]
 DYN_MASS = 1e6  # [kg/m^2] for the dynamic variants
 
 BASE = {
@@ -139,7 +150,7 @@ def write_prm(name, end, max_step, p):
 set End time         = {end:.15g}
 set Output directory = {d}
 subsection Time stepping
-  set Integrator = implicit
+  set Integrator = {INTEGRATOR}
   set Controller   = step-doubling
   set Adaptive     = true
   set Tolerance    = 1e-5
@@ -238,6 +249,10 @@ def run(name, what, end, max_step, p):
     if final and re.search(r"nan|inf", final.group(0), re.I):
         other.append("Final line: " + final.group(0))
     events = len(re.findall(r"event \d+ starts", out))
+    warned = re.search(r"\*\*\* Warning: .*?\(step (\S+) s at t = (\S+) s", out)
+    if warned:
+        outcome += (f"; warned (stability-limited, crawling) at t = "
+                    f"{warned.group(2)} s, step {warned.group(1)} s")
     loop = re.search(r"Wall time of the time loop: (\S+) s", out)
     loop = float(loop.group(1)) if loop else float("nan")
     return dict(name=name, what=what, end=end, outcome=outcome, steps=steps,
@@ -263,7 +278,8 @@ def main():
               f"{r['nonfinite']} {r['other']}", flush=True)
     if ONLY:
         return
-    with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
+    suffix = "" if INTEGRATOR == "implicit" else "-" + INTEGRATOR
+    with open(os.path.join(HERE, f"results{suffix}.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "set-up", "end time [s]", "outcome", "steps",
                     "min step [s]", "max step [s]", "wall time [s]",
@@ -296,7 +312,8 @@ def main():
     readme = os.path.join(HERE, "README.md")
     if os.path.exists(readme):
         text = open(readme).read()
-        begin, end = "<!-- table begin -->", "<!-- table end -->"
+        begin, end = (f"<!-- table{suffix} begin -->",
+                      f"<!-- table{suffix} end -->")
         if begin in text and end in text:
             text = (text[:text.index(begin) + len(begin)] + "\n" + table +
                     "\n" + text[text.index(end):])

@@ -180,6 +180,12 @@ namespace rsfcycle
       /** rtol L_k for the slip, rtol for alpha. */
       Vector
       ode_absolute_tolerances(double relative) const override;
+      std::string
+      stiff_alternative() const override
+      {
+        return "Solver/Bulk = volume with Time stepping/Integrator = "
+               "implicit (the implicit step over the mesh)";
+      }
       /** Not used by runge-kutta (every step is a sample). */
       double
       sample_interval(const State &) const override

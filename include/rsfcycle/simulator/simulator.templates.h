@@ -223,6 +223,9 @@ namespace rsfcycle
               report_underflow(e);
               throw;
             }
+          if (const std::string warning = integrator->take_warning();
+              !warning.empty())
+            log << "*** Warning: " << warning << std::endl;
           const bool stop_for_events = record_step();
 
           const auto now = std::chrono::steady_clock::now();

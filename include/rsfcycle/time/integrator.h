@@ -95,6 +95,17 @@ namespace rsfcycle
       virtual void
       restore(const IntegratorMemory<State> &memory) = 0;
 
+      /**
+       * A warning about the run (one line, without "Warning:") that the
+       * last advance() raised and the simulator writes to the log; empty
+       * if none. Each is returned once.
+       */
+      virtual std::string
+      take_warning()
+      {
+        return {};
+      }
+
       /** Whether the integrator's state fits in a checkpoint. */
       virtual bool
       can_checkpoint() const

@@ -49,6 +49,17 @@ namespace rsfcycle
       virtual Vector
       ode_absolute_tolerances(double relative) const = 0;
 
+      /**
+       * What to use where the ODE is too stiff for an explicit method (the
+       * entries to set), for the messages of time::RungeKuttaIntegrator.
+       */
+      virtual std::string
+      stiff_alternative() const
+      {
+        return "Time stepping/Integrator = implicit (the implicit step) or "
+               "arkode (ARKODE's implicit method)";
+      }
+
       /** The longest interval to the next sample after `state` [s]. */
       virtual double
       sample_interval(const State &state) const = 0;

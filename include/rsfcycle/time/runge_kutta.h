@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <sundials/sundials_context.h>
+#include <utility>
 
 namespace rsfcycle
 {
@@ -74,6 +75,11 @@ namespace rsfcycle
       {
         if (arkode == nullptr)
           start(current, t);
+        // every 50th step, the stiffness at its end (the unknowns before it
+        // give the first direction of the power iteration)
+        const bool check = !warned && ++steps_since_check >= check_interval;
+        if (check)
+          previous = values();
         // (a fresh start evaluates the right-hand side once more, at t:
         // not counted, so that a resumed run writes the same counts)
         rhs_evaluations  = fresh ? -1 : 0;
@@ -117,13 +123,29 @@ namespace rsfcycle
             throw StepSizeUnderflow(
               "ARKODE's explicit Runge-Kutta found no step at t = " +
               format_number(t) + " s (" + name +
-              "): the ODE is too stiff for an explicit method here; "
-              "Solver/Bulk = volume (the implicit step) is the way out");
+              "): the ODE is too stiff for an explicit method here; " +
+              model.stiff_alternative() + " is the way out");
           }
         ARKStepGetCurrentStep(arkode, &next_step);
         last_step = t_reached - t;
         t         = t_reached;
         current   = model.from_ode(values(), t);
+        if (check)
+          check_stiffness(t, end_time);
+      }
+
+      /**
+       * Once per run, when the steps have been held by the explicit
+       * method's stability rather than by its accuracy for 10 checks in a
+       * row (500 steps) and the run would need more than a million of them
+       * to its end (it crawls; BP1-QD's stability-limited interseismic
+       * steps of months do not count): one line saying so and naming the
+       * model's way out.
+       */
+      std::string
+      take_warning() override
+      {
+        return std::exchange(warning, std::string());
       }
 
       double
@@ -172,6 +194,91 @@ namespace rsfcycle
       }
 
     private:
+      /**
+       * h rho after the step that ended at t, rho the spectral radius of
+       * the Jacobian of the right-hand side estimated by three steps of a
+       * power iteration with finite differences, started from the step's
+       * change of the unknowns, in the norm of the error test (weights
+       * 1 / (atol + rtol |y|)). Dormand-Prince 5(4) is stable for h |lambda|
+       * up to about 3.3 on the negative real axis; above 1.5 the step
+       * counts as stability-limited (the estimate is a lower bound). Where
+       * the eigenvalues are far off the real axis (an inertial
+       * spring-slider) the estimate misses and the steps are rejected
+       * instead: half of the steps since the last check rejected counts
+       * too.
+       */
+      void
+      check_stiffness(const double t, const double end_time)
+      {
+        steps_since_check  = 0;
+        const Vector &y    = values();
+        const double *a    = N_VGetArrayPointer(tolerances);
+        const auto    norm = [&](const Vector &v) {
+          double sum = 0;
+          for (unsigned int j = 0; j < v.size(); ++j)
+            {
+              const double w =
+                1. / (a[j] + parameters.tolerance * std::abs(y[j]));
+              sum += v[j] * w * v[j] * w;
+            }
+          return std::sqrt(sum / std::max<unsigned int>(v.size(), 1));
+        };
+        Vector direction(y), f0(y.size()), f(y.size()), moved(y.size());
+        direction -= previous;
+        double rho  = 0;
+        double size = norm(direction);
+        if (size > 0 && model.ode_rhs(t, y, f0) == 0)
+          for (unsigned int iteration = 0; iteration < 3; ++iteration)
+            {
+              // a perturbation of a hundredth of the tolerances
+              const double epsilon = 1e-2 / size;
+              moved                = y;
+              moved.add(epsilon, direction);
+              if (model.ode_rhs(t, moved, f) != 0)
+                break;
+              f -= f0;
+              f /= epsilon; // J d
+              const double image = norm(f);
+              rho                = image / size;
+              if (!(rho > 0))
+                break;
+              direction = f;
+              size      = image;
+            }
+        // the error-test failures since the last check (ARKStep counts
+        // from its last start)
+        long int fails = 0;
+        ARKStepGetNumErrTestFails(arkode, &fails);
+        const long int rejected =
+          fails >= fails_at_check ? fails - fails_at_check : fails;
+        fails_at_check = fails;
+        window_rejected += rejected;
+        // held by stability, or rejecting every other step, and more than
+        // a million such steps to go
+        if ((last_step * rho > 1.5 || 2 * rejected >= check_interval) &&
+            end_time - t > 1e6 * last_step)
+          ++limited_checks;
+        else
+          {
+            limited_checks  = 0;
+            window_rejected = 0;
+          }
+        if (limited_checks >= 10)
+          {
+            warned  = true;
+            warning = "the explicit Runge-Kutta has crawled for the last " +
+                      std::to_string(10 * check_interval) +
+                      " steps, held by stability or rejecting its steps, "
+                      "not by accuracy (step " +
+                      format_number(last_step) +
+                      " s at t = " + format_number(t) +
+                      " s, h |lambda| about " + format_number(last_step * rho) +
+                      ", " + std::to_string(window_rejected) +
+                      " steps rejected): the ODE is stiff here; " +
+                      model.stiff_alternative() + " is the way out";
+          }
+      }
+
       /** ARKStep with the Dormand-Prince table from the state at t. */
       void
       start(const State &current, const double t)
@@ -180,7 +287,8 @@ namespace rsfcycle
         const Vector a  = model.ode_absolute_tolerances(parameters.tolerance);
         if (arkode != nullptr)
           ARKStepFree(&arkode);
-        fresh = true;
+        fresh          = true;
+        fails_at_check = 0;
         if (y != nullptr)
           N_VDestroy(y);
         if (tolerances != nullptr)
@@ -259,6 +367,13 @@ namespace rsfcycle
       double                        last_step       = 0;
       int                           rhs_evaluations = 0;
       bool                          fresh           = false;
+      /** The stiffness check (check_stiffness()). */
+      static constexpr unsigned int check_interval    = 50;
+      unsigned int                  steps_since_check = 0, limited_checks = 0;
+      long int                      fails_at_check = 0, window_rejected = 0;
+      bool                          warned = false;
+      Vector                        previous;
+      std::string                   warning;
       /** Restarts of one advance() after a non-finite right-hand side. */
       static constexpr unsigned int max_restarts = 8;
     };

@@ -31,7 +31,8 @@ namespace rsfcycle
       const unsigned int  n_own = nodes.size();
       output::Sample      sample;
       std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own);
-      std::vector<double> pressures(n_own), darcy(n_own);
+      std::vector<double> pressures(pore_pressure ? n_own : 0),
+        darcy(darcy_velocity ? n_own : 0);
       std::vector<std::array<double, 2>> slip(n_own);
       for (unsigned int k = 0; k < n_own; ++k)
         {
@@ -39,11 +40,16 @@ namespace rsfcycle
           const double alpha = state.alpha[first + k];
           rates[k]           = std::abs(state.rate[first + k]);
           slip[k]            = {{state.slip[first + k], 0.}};
-          stresses[k]        = normal_force(k, state.t) / nodes[k].weight *
-                        law.friction_coefficient(p, alpha, rates[k]);
-          log10_states[k] = p.log_theta(alpha) / std::log(10.);
+          // (the pressure evaluated once: the effective normal stress here
+          // is normal_force(k, t) / w)
+          double sigma = nodes[k].normal_force / nodes[k].weight;
           if (pore_pressure)
-            pressures[k] = pore_pressure(nodes[k].position, state.t);
+            {
+              pressures[k] = pore_pressure(nodes[k].position, state.t);
+              sigma -= pressures[k];
+            }
+          stresses[k] = sigma * law.friction_coefficient(p, alpha, rates[k]);
+          log10_states[k] = p.log_theta(alpha) / std::log(10.);
           if (darcy_velocity)
             darcy[k] = darcy_velocity(nodes[k].position, state.t);
         }

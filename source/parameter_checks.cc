@@ -48,11 +48,14 @@ namespace rsfcycle
         ": needs Solver/Bulk = green-function");
     if (green && run.dimension != 2)
       throw std::invalid_argument(bulk + "Dimension = 2 (3D is not done)");
-    if (green != (ts.integrator == "runge-kutta") &&
+    if (green && ts.integrator == "arkode")
+      throw std::invalid_argument(
+        bulk + "Time stepping/Integrator = runge-kutta or implicit (arkode "
+               "samples the run only every Maximum step)");
+    if (!green && ts.integrator == "runge-kutta" &&
         run.scene != "spring-slider")
       throw std::invalid_argument(
-        green ? bulk + "Time stepping/Integrator = runge-kutta" :
-                "Time stepping/Integrator = runge-kutta: needs Solver/Bulk = "
-                "green-function for a continuum scene");
+        "Time stepping/Integrator = runge-kutta: needs Solver/Bulk = "
+        "green-function for a continuum scene");
   }
 } // namespace rsfcycle

@@ -151,7 +151,8 @@ namespace rsfcycle
       "runge-kutta: ARKODE's explicit Dormand-Prince 5(4) on the model's "
       "ODE (relative tolerance = Tolerance, steps between Minimum step and "
       "Maximum step, starting at Initial step), every accepted step a step "
-      "of the run: the fault's ODE of Solver/Bulk = green-function");
+      "of the run: the fault's ODE of Solver/Bulk = green-function, which "
+      "takes implicit too (the implicit step on the fault's nodes)");
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),
@@ -287,8 +288,9 @@ namespace rsfcycle
       Selection(Choice<Bulk>::pattern()),
       "volume: the implicit step over the mesh (TNNMG); green-function: "
       "the fault's Green's functions from the mesh (MODEL.md 8.1) and the "
-      "fault's ODE by Time stepping/Integrator = runge-kutta: quasi-dynamic, "
-      "elastic, prescribed normal stress, constant load");
+      "fault's ODE by Time stepping/Integrator = runge-kutta, or the "
+      "implicit step on the fault's nodes (Integrator = implicit): "
+      "quasi-dynamic, elastic, prescribed normal stress, constant load");
     prm.declare_entry(
       "Green operator file",
       "",
@@ -382,7 +384,9 @@ namespace rsfcycle
                       "to that of the iterate, is below this; with an "
                       "adaptive step at most a tenth of Time stepping/"
                       "Tolerance, or the step-size control sees the solver's "
-                      "error and takes needlessly small steps [-]");
+                      "error and takes needlessly small steps (the implicit "
+                      "step of Bulk = green-function stops its fault solver "
+                      "the same way) [-]");
     prm.declare_entry("Inner tolerance factor",
                       "0.3",
                       Double(0, 1),

@@ -10,6 +10,10 @@ fault nodes) from t = 0 to END years (default 520: five events) with
     1e-2 ... 1e-8), each at the Runge-Kutta tolerance --rk-for-compression
     (default 1e-7, so that the time integration does not hide the
     compression's error);
+  - the Green's-function method with the implicit step on the fault
+    (Integrator = implicit: the trapezoidal step, step-doubling and
+    fixed-point tolerance both equal to each of --implicit, TNNMG
+    tolerance 1e-8, dense operator), if --implicit is given;
   - the volume method at the .prm's shipped volume settings (implicit
     trapezoidal step, delta = epsilon = 1e-5, TNNMG 1e-8, multigrid), if
     --volume is given;
@@ -27,7 +31,8 @@ the caller's to keep quiet (say so when quoting the figures).
 
 Usage (from the repository root):
   /usr/bin/python3 benchmarks/green-function/work_precision.py build/rsfcycle \
-      [--out DIR] [--end 520] [--volume] [--only LABEL,...] [--cpu N]
+      [--out DIR] [--end 520] [--volume] [--implicit 1e-3,1e-4,...]
+      [--only LABEL,...] [--cpu N]
 Writes DIR/results.csv (appending, one row per run label; an existing label
 is not run again), DIR/work-precision.png and prints the table.
 """
@@ -59,6 +64,14 @@ def green(tol, storage="dense", compression=None):
               "  set Integrator = runge-kutta", f"  set Tolerance = {tol:g}",
               "end"]
     return lines
+
+
+def green_implicit(tol):
+    return ["subsection Solver", "  set Bulk = green-function",
+            "  set Green operator storage = dense",
+            f"  set Fixed-point tolerance = {tol:g}", "end",
+            "subsection Time stepping", "  set Integrator = implicit",
+            f"  set Tolerance = {tol:g}", "end"]
 
 
 VOLUME = ["subsection Solver", "  set Bulk = volume", "end",
@@ -97,6 +110,8 @@ def main():
     p.add_argument("--rk-for-compression", type=float, default=1e-7)
     p.add_argument("--reference", type=float, default=1e-9)
     p.add_argument("--volume", action="store_true")
+    p.add_argument("--implicit", default="",
+                   help="tolerances of the implicit step on the fault, e.g. 1e-3,1e-4")
     p.add_argument("--only", default="")
     p.add_argument("--cpu", type=int, default=0, help="the core to pin to")
     a = p.parse_args()
@@ -110,6 +125,9 @@ def main():
     runs += [(f"hmatrix-{c}", "H-matrix tolerance",
               green(a.rk_for_compression, "h-matrix", float(c)))
              for c in a.compression.split(",")]
+    runs += [(f"implicit-{t}", "implicit step on the fault",
+              green_implicit(float(t)))
+             for t in a.implicit.split(",") if t]
     if a.volume:
         runs.append(("volume", "volume (shipped)", VOLUME))
     only = set(a.only.split(",")) - {""}
@@ -164,6 +182,7 @@ def main():
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=False)
     markers = {"Runge-Kutta tolerance": "o-", "H-matrix tolerance": "s-",
+               "implicit step on the fault": "^-",
                "volume (shipped)": "*"}
     for ax, k, name in ((axes[0], 3, "first event"), (axes[1], 4, "recurrence")):
         for family, style in markers.items():

@@ -9,6 +9,7 @@
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/simulator/simulator.templates.h>
+#include <rsfcycle/time/schemes.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -68,6 +69,9 @@ namespace rsfcycle
       , timer(log, TimerOutput::never, TimerOutput::wall_times)
       , discretisation(parameters.mesh, scene, {parameters.run.antiplane, true})
       , communicator(discretisation.triangulation.get_communicator())
+      , scheme(time::make_scheme(parameters.solver, false))
+      , fault_solver(parameters.solver.max_tnnmg_iterations,
+                     parameters.solver.truncation_ratio)
     {
       check(parameters, scene);
     }
@@ -185,6 +189,20 @@ namespace rsfcycle
                                          first,
                                          nodes.size(),
                                          communicator);
+      }
+
+      // what the implicit step needs of S and of the quadrature
+      S_diagonal.clear();
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        S_diagonal.push_back(op.S(k, op.first_row + k));
+      {
+        std::vector<double> weights;
+        for (const auto &node : contact.nodes())
+          weights.push_back(node.weight);
+        all_weights  = la::all_gather(communicator, weights);
+        total_weight = 0;
+        for (const double w : all_weights)
+          total_weight += w;
       }
 
       // S as an H-matrix: asked for, or automatic from 1000 contact nodes

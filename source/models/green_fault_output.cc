@@ -72,6 +72,7 @@ namespace rsfcycle
           sample.observations.push_back(u);
           sample.observation_rates.push_back(v);
         }
+      sample.statistics.fixed_point_iterations = state.fixed_point_iterations;
       return sample;
     }
 
@@ -180,10 +181,19 @@ namespace rsfcycle
         log << "read from " << operator_source;
       log << " (set-up " << format_number(setup_seconds) << " s)\n"
           << "Solver: " << parameters.solver.law->name() << " law, "
-          << name_of(parameters.solver.dynamics)
-          << ", the fault's ODE by explicit Dormand-Prince 5(4) (ARKODE), "
-             "relative tolerance "
-          << parameters.time_stepping.tolerance << std::endl;
+          << name_of(parameters.solver.dynamics);
+      if (parameters.time_stepping.integrator == "implicit")
+        log << ", the implicit step on the fault: " << scheme->describe()
+            << ", " << name_of(parameters.solver.coupling)
+            << " coupling (tolerance "
+            << parameters.solver.fixed_point_tolerance
+            << "), fault solver tolerance " << parameters.solver.tnnmg_tolerance
+            << ", step tolerance " << parameters.time_stepping.tolerance
+            << std::endl;
+      else
+        log << ", the fault's ODE by explicit Dormand-Prince 5(4) (ARKODE), "
+               "relative tolerance "
+            << parameters.time_stepping.tolerance << std::endl;
     }
 
 

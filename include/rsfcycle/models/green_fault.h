@@ -1,10 +1,13 @@
 #ifndef rsfcycle_models_green_fault_h
 #define rsfcycle_models_green_fault_h
 
+#include <array>
 #include <cstdint>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <rsfcycle/output/writer.h>
 #include <rsfcycle/parameters.h>
@@ -14,8 +17,11 @@
 #include <rsfcycle/physics/green_operator.h>
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/physics/static_solver.h>
+#include <rsfcycle/solvers/fault_solver.h>
+#include <rsfcycle/time/implicit_model.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/ode_model.h>
+#include <rsfcycle/time/time_scheme.h>
 #include <string>
 #include <vector>
 
@@ -32,6 +38,11 @@ namespace rsfcycle
       std::vector<double> alpha; // log(theta V* / L) [-]
       std::vector<double> rate;  // V = ds/dt [m/s], from the force balance
       double              t = 0; // [s]
+      /**
+       * The rate/state fixed point's iterations of the implicit step that
+       * made this state (a statistic, not in checkpoints; 0 otherwise).
+       */
+      unsigned int fixed_point_iterations = 0;
 
       template <class Archive>
       void
@@ -60,12 +71,17 @@ namespace rsfcycle
      * its own; the rates are gathered after each right-hand side, so
      * ARKODE takes the same steps on every rank. The
      * simulator integrates it with `Time stepping/Integrator =
-     * runge-kutta` and writes the same files as the volume path, the VTU
-     * snapshots from a static solve of the body at each output time.
+     * runge-kutta`, or with `implicit`: the volume path's implicit step
+     * (`Solver/Theta`, the rate/state fixed point, the step-size control)
+     * with its spatial problem on the fault's nodes only
+     * (solvers::FaultSolver, green_fault_step.cc). It writes the same files
+     * as the volume path, the VTU snapshots from a static solve of the body
+     * at each output time.
      */
     template <int dim>
     class GreenFault : public time::Model<FaultState>,
-                       public time::OdeModel<FaultState>
+                       public time::OdeModel<FaultState>,
+                       public time::ImplicitModel<FaultState>
     {
     public:
       using State = FaultState;
@@ -183,8 +199,8 @@ namespace rsfcycle
       std::string
       stiff_alternative() const override
       {
-        return "Solver/Bulk = volume with Time stepping/Integrator = "
-               "implicit (the implicit step over the mesh)";
+        return "Time stepping/Integrator = implicit (the implicit step on "
+               "the fault, with this operator) or Solver/Bulk = volume";
       }
       /** Not used by runge-kutta (every step is a sample). */
       double
@@ -194,7 +210,38 @@ namespace rsfcycle
       }
       /** @} */
 
+      /** @name The time::ImplicitModel interface (green_fault_step.cc) */
+      /** @{ */
+      /**
+       * The implicit step of `Solver/Time scheme` on the fault: for the
+       * slip rates w = V_{n+1} (theta scheme) the balance
+       *   g0 + t* g1 - S (s_n + tau (1 - theta) V_n + theta tau w) - D w
+       *     = N mu(w, alpha)
+       * is the minimum of the convex fault problem with A = theta tau S +
+       * D (solvers::FaultSolver, `Solver/TNNMG tolerance`), inside the
+       * rate/state fixed point (`Solver/Coupling`).
+       */
+      std::optional<State>
+      step(const State &old, double t, double tau, const State *guess) override;
+      /** The state distance (14), or the largest (`Error norm`). */
+      double
+      error_distance(const State &s1, const State &s2) const override;
+      State
+      predict(const std::array<const State *, 3> &states,
+              const std::array<double, 3>        &weights) const override;
+      double
+      error_order() const override
+      {
+        return scheme->local_error_order();
+      }
+      /** @} */
+
     private:
+      /** The state distance (14) over all nodes (every rank has them). */
+      double
+      state_distance(const std::vector<double> &alpha1,
+                     const std::vector<double> &alpha2) const;
+
       /**
        * values[offsets[r] ... offsets[r] + counts[r]) from rank r, on every
        * rank (nothing to do on one).
@@ -262,6 +309,14 @@ namespace rsfcycle
       mutable std::unique_ptr<physics::StaticSolver<dim>> static_solver;
       State                                               initial;
       mutable Vector                                      force_work;
+      /** The implicit step's scheme and fault solver. */
+      std::unique_ptr<const time::TimeScheme> scheme;
+      solvers::FaultSolver                    fault_solver;
+      /** S_kk of this rank's nodes (taken before compression). */
+      std::vector<double> S_diagonal;
+      /** The lumped weights of all nodes and their sum (the distance). */
+      std::vector<double> all_weights;
+      double              total_weight = 0;
     };
   } // namespace models
 } // namespace rsfcycle

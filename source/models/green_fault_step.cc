@@ -1,0 +1,175 @@
+// The implicit step of the Green's-function method: the spatial problem on
+// the fault's nodes only (models/green_fault.h, solvers/fault_solver.h).
+#include <cmath>
+#include <rsfcycle/models/green_fault.h>
+#include <rsfcycle/time/rate_state_coupling.h>
+
+namespace rsfcycle
+{
+  namespace models
+  {
+    template <int dim>
+    std::optional<FaultState>
+    GreenFault<dim>::step(const State &old,
+                          const double t,
+                          const double tau,
+                          const State *guess)
+    {
+      TimerOutput::Scope scope(timer, "Implicit fault step");
+      const unsigned int n = old.slip.size(), first = op.first_row,
+                         n_own = damping.size();
+      const auto   c           = time::step_coefficients(*scheme, tau, false);
+      const auto   d           = scheme->known_displacement();
+      const double t_step      = t + scheme->load_fraction() * tau;
+      const auto  &law         = *parameters.solver.law;
+
+      // r = g0 + t* g1 - S (s_n + tau d0 V_n), the damping c_C eta w, the
+      // friction potentials at t*
+      std::vector<double> known(n), rhs(n_own), D(n_own);
+      for (unsigned int j = 0; j < n; ++j)
+        known[j] = old.slip[j] + tau * d[0] * old.rate[j];
+      op.apply(known.data(), rhs.data());
+      std::vector<friction::NodePotential> potentials(n_own);
+      bool                                 compressed = true;
+      for (unsigned int k = 0; k < n_own; ++k)
+        {
+          rhs[k]                     = op.g0[k] + t_step * op.g1[k] - rhs[k];
+          D[k]                       = c[1] * damping[k];
+          potentials[k].law          = &law;
+          potentials[k].params       = contact.nodes()[k].params;
+          potentials[k].normal_force = normal_force(k, t_step);
+          compressed = compressed && potentials[k].normal_force > 0;
+        }
+      // (a pore pressure that leaves a node without compression: the same
+      // one-line error as the Runge-Kutta's, on every rank)
+      if (pore_pressure &&
+          Utilities::MPI::min(compressed ? 1 : 0, communicator) == 0)
+        check_compression(t_step);
+      solvers::FaultProblem problem;
+      problem.apply_S = [this](const double *x, double *y) { op.apply(x, y); };
+      problem.gather  = [this](double *values) { gather_in_place(values); };
+      problem.stiffness_factor = c[2];
+      problem.S_diagonal       = &S_diagonal;
+      problem.damping          = &D;
+      problem.rhs              = &rhs;
+      problem.potentials       = &potentials;
+      problem.first            = first;
+      problem.communicator     = communicator;
+
+      std::vector<double> w          = guess ? guess->rate : old.rate;
+      std::vector<double> alpha      = guess ? guess->alpha : old.alpha;
+      const double        sigma      = scheme->friction_state_weight();
+      const auto          iterations = time::couple_rate_and_state(
+        parameters.solver.coupling,
+        parameters.solver.fixed_point_tolerance,
+        parameters.solver.max_fixed_point_iterations,
+        scheme->state_weight(),
+        old.rate,
+        w,
+        alpha,
+        [&](const std::vector<double> &a, std::vector<double> &v) {
+          for (unsigned int k = 0; k < n_own; ++k)
+            potentials[k].set_state((1 - sigma) * old.alpha[first + k] +
+                                    sigma * a[first + k]);
+          return fault_solver
+            .solve(problem, v, parameters.solver.tnnmg_tolerance)
+            .converged;
+        },
+        [&](const std::vector<double> &v_new,
+            const double               weight_new,
+            std::vector<double>       &a) {
+          for (unsigned int k = 0; k < n_own; ++k)
+            {
+              const unsigned int j = first + k;
+              const double       V = std::abs((1 - weight_new) * old.rate[j] +
+                                        weight_new * v_new[j]);
+              a[j] = law.update_state(contact.nodes()[k].params,
+                                      old.alpha[j],
+                                      V,
+                                      tau);
+            }
+          gather_in_place(a.data());
+        },
+        [this](const std::vector<double> &a1, const std::vector<double> &a2) {
+          return state_distance(a1, a2);
+        });
+      if (!iterations)
+        return {};
+
+      const auto e = scheme->new_velocity();
+      const auto h = scheme->new_displacement();
+      State      next;
+      next.t                      = t + tau;
+      next.fixed_point_iterations = *iterations;
+      next.alpha                  = alpha;
+      next.rate.resize(n);
+      next.slip.resize(n);
+      bool finite = true;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          next.rate[j] = e[0] * w[j] + e[1] * old.rate[j];
+          next.slip[j] =
+            old.slip[j] + tau * (h[0] * old.rate[j] + h[1] * next.rate[j]);
+          finite = finite && std::isfinite(next.slip[j]) &&
+                   std::isfinite(next.alpha[j]) && std::isfinite(next.rate[j]);
+        }
+      if (!finite)
+        return {};
+      return next;
+    }
+
+
+    template <int dim>
+    double
+    GreenFault<dim>::state_distance(const std::vector<double> &alpha1,
+                                    const std::vector<double> &alpha2) const
+    {
+      double sum = 0;
+      for (unsigned int j = 0; j < alpha1.size(); ++j)
+        sum +=
+          all_weights[j] * (alpha1[j] - alpha2[j]) * (alpha1[j] - alpha2[j]);
+      return std::sqrt(sum / total_weight);
+    }
+
+
+    template <int dim>
+    double
+    GreenFault<dim>::error_distance(const State &s1, const State &s2) const
+    {
+      if (parameters.time_stepping.error_norm !=
+          TimeSteppingParameters::ErrorNorm::max)
+        return state_distance(s1.alpha, s2.alpha);
+      double largest = 0;
+      for (unsigned int j = 0; j < s1.alpha.size(); ++j)
+        largest = std::max(largest, std::abs(s1.alpha[j] - s2.alpha[j]));
+      return largest;
+    }
+
+
+    template <int dim>
+    FaultState
+    GreenFault<dim>::predict(const std::array<const State *, 3> &s,
+                             const std::array<double, 3>        &w) const
+    {
+      State p;
+      p.slip.assign(s[0]->slip.size(), 0.);
+      p.alpha.assign(s[0]->alpha.size(), 0.);
+      p.rate.assign(s[0]->rate.size(), 0.);
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          p.t += w[i] * s[i]->t;
+          for (unsigned int j = 0; j < p.slip.size(); ++j)
+            {
+              p.slip[j] += w[i] * s[i]->slip[j];
+              p.alpha[j] += w[i] * s[i]->alpha[j];
+              p.rate[j] += w[i] * s[i]->rate[j];
+            }
+        }
+      return p;
+    }
+
+
+    template class GreenFault<2>;
+    template class GreenFault<3>;
+  } // namespace models
+} // namespace rsfcycle

@@ -46,8 +46,11 @@ namespace rsfcycle
       throw std::invalid_argument(
         "Solver/Green operator file = " + solver.green_operator_file +
         ": needs Solver/Bulk = green-function");
-    if (green && run.dimension != 2)
-      throw std::invalid_argument(bulk + "Dimension = 2 (3D is not done)");
+    if (green && run.dimension != 2 && ts.integrator == "implicit")
+      throw std::invalid_argument(
+        bulk + "Time stepping/Integrator = runge-kutta in 3D (the implicit "
+               "step on the fault takes one slip component per node, 2D "
+               "only)");
     if (green && ts.integrator == "arkode")
       throw std::invalid_argument(
         bulk + "Time stepping/Integrator = runge-kutta or implicit (arkode "

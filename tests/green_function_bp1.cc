@@ -39,25 +39,6 @@ using namespace rsfcycle;
 
 namespace
 {
-  std::vector<std::vector<double>>
-  read_csv(const std::string &file)
-  {
-    std::ifstream                    in(file);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    std::getline(in, line);
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        std::stringstream   s(line);
-        std::string         cell;
-        while (std::getline(s, cell, ','))
-          row.push_back(cell == "-" || cell.empty() ? 0. : std::stod(cell));
-        rows.push_back(row);
-      }
-    return rows;
-  }
-
   struct Result
   {
     std::vector<std::vector<double>> events;

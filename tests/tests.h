@@ -8,6 +8,9 @@
 #include <deal.II/base/logstream.h>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
 
 inline std::ofstream &
 initlog(const unsigned int precision = 8)
@@ -17,6 +20,30 @@ initlog(const unsigned int precision = 8)
   dealii::deallog.attach(logfile);
   dealii::deallog.depth_console(0);
   return logfile;
+}
+
+
+/**
+ * The rows of a CSV file after its header, as numbers ("-" and empty cells
+ * as 0).
+ */
+inline std::vector<std::vector<double>>
+read_csv(const std::string &file)
+{
+  std::ifstream                    in(file);
+  std::string                      line;
+  std::vector<std::vector<double>> rows;
+  std::getline(in, line);
+  while (std::getline(in, line))
+    {
+      std::vector<double> row;
+      std::stringstream   s(line);
+      std::string         cell;
+      while (std::getline(s, cell, ','))
+        row.push_back(cell == "-" || cell.empty() ? 0. : std::stod(cell));
+      rows.push_back(row);
+    }
+  return rows;
 }
 
 #endif

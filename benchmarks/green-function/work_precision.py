@@ -124,7 +124,7 @@ def main():
              for t in a.rk.split(",")]
     runs += [(f"hmatrix-{c}", "H-matrix tolerance",
               green(a.rk_for_compression, "h-matrix", float(c)))
-             for c in a.compression.split(",")]
+             for c in a.compression.split(",") if c]
     runs += [(f"implicit-{t}", "implicit step on the fault",
               green_implicit(float(t)))
              for t in a.implicit.split(",") if t]

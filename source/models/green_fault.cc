@@ -1,5 +1,6 @@
 // The quasi-dynamic fault with the bulk's Green's functions
 // (models/green_fault.h, MODEL.md §8.1).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deal.II/grid/tria.h>
@@ -119,7 +120,8 @@ namespace rsfcycle
       const auto       &nodes = contact.contact_set().nodes;
       std::vector<bool> on_contact(C.m(), false);
       for (const auto &node : nodes)
-        on_contact[node.dofs[0]] = true;
+        for (unsigned int d = 0; d < node.n_dofs; ++d)
+          on_contact[node.dofs[d]] = true;
       // (the rows and columns of fixed dofs do not enter: their values
       // are prescribed, and constrained rows carry a diagonal)
       // (a refusal on one rank is made on every rank: the first rank's)
@@ -134,8 +136,10 @@ namespace rsfcycle
                       "or viscosity; only radiation damping on the "
                       "contact is allowed";
       damping.assign(nodes.size(), 0.);
+      dof_start.assign(1, 0);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
+          dof_start.push_back(dof_start.back() + nodes[k].n_dofs);
           const unsigned int i = nodes[k].dofs[0];
           for (unsigned int e = C.row_begin(i); e < C.row_end(i); ++e)
             if (C.column(e) == i)
@@ -161,7 +165,8 @@ namespace rsfcycle
                                     scene,
                                     parameters.run.antiplane));
         fingerprint = physics::operator_fingerprint(system);
-        // every rank's nodes in the state: counts and offsets of the gathers
+        // every rank's dofs and nodes in the state: counts and offsets of
+        // the gathers
         counts.clear();
         offsets.clear();
         for (unsigned int r = 0; r + 1 < system.rank_offsets.size(); ++r)
@@ -170,6 +175,14 @@ namespace rsfcycle
             counts.push_back(system.rank_offsets[r + 1] -
                              system.rank_offsets[r]);
           }
+        node_counts =
+          Utilities::MPI::all_gather(communicator,
+                                     static_cast<int>(nodes.size()));
+        node_offsets.assign(1, 0);
+        for (unsigned int r = 0; r + 1 < node_counts.size(); ++r)
+          node_offsets.push_back(node_offsets.back() + node_counts[r]);
+        first_node =
+          node_offsets[Utilities::MPI::this_mpi_process(communicator)];
         const unsigned int first =
           system.rank_offsets[Utilities::MPI::this_mpi_process(communicator)];
         operator_source =
@@ -187,14 +200,14 @@ namespace rsfcycle
                                          system.contact_dofs.size(),
                                          system.observations.size(),
                                          first,
-                                         nodes.size(),
+                                         dof_start.back(),
                                          communicator);
       }
 
       // what the implicit step needs of S and of the quadrature
       S_diagonal.clear();
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        S_diagonal.push_back(op.S(k, op.first_row + k));
+      for (unsigned int i = 0; i < op.n_rows(); ++i)
+        S_diagonal.push_back(op.S(i, op.first_row + i));
       {
         std::vector<double> weights;
         for (const auto &node : contact.nodes())
@@ -215,9 +228,11 @@ namespace rsfcycle
           {
             TimerOutput::Scope  scope(timer, "Green's function compression");
             std::vector<double> points;
-            for (const auto &node : contact.nodes())
-              for (unsigned int d = 0; d < dim; ++d)
-                points.push_back(node.position[d]);
+            // (a node's dofs at its position)
+            for (unsigned int k = 0; k < nodes.size(); ++k)
+              for (unsigned int i = 0; i < nodes[k].n_dofs; ++i)
+                for (unsigned int d = 0; d < dim; ++d)
+                  points.push_back(contact.nodes()[k].position[d]);
             compression_error = Utilities::MPI::max(
               op.compress(la::all_gather(communicator, points),
                           dim,
@@ -240,7 +255,8 @@ namespace rsfcycle
         std::vector<double> slip, alpha;
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
-            slip.push_back(u.local_element(nodes[k].dofs[0]));
+            for (unsigned int d = 0; d < nodes[k].n_dofs; ++d)
+              slip.push_back(u.local_element(nodes[k].dofs[d]));
             alpha.push_back(scene.initial_state(contact.nodes()[k].position));
           }
         // the state of all nodes on every rank, rank by rank
@@ -249,7 +265,7 @@ namespace rsfcycle
       }
       initial.t = 0;
       initial.rate.resize(initial.slip.size());
-      force_work.reinit(nodes.size());
+      force_work.reinit(dof_start.back());
       slip_rates(initial.slip.data(),
                  initial.alpha.data(),
                  0.,
@@ -338,21 +354,37 @@ namespace rsfcycle
       op.apply(s, force_work.begin());
       for (unsigned int k = 0; k < damping.size(); ++k)
         {
-          const unsigned int j = first + k;
-          V[j]                 = slip_rate(k,
-                           op.g0[k] + t * op.g1[k] - force_work[k],
-                           alpha[j],
-                           normal_force(k, t));
+          // the node's force F = g0 + t g1 - S s on its dofs; with two, the
+          // slip rate has the direction of F (free rake) and the balance
+          // holds for its length
+          const unsigned int i0 = dof_start[k], n_dofs = dof_start[k + 1] - i0;
+          const unsigned int node = first_node + k;
+          std::array<double, 2> F = {{0., 0.}};
+          for (unsigned int d = 0; d < n_dofs; ++d)
+            F[d] = op.g0[i0 + d] + t * op.g1[i0 + d] - force_work[i0 + d];
+          double speed;
+          if (n_dofs == 1)
+            {
+              V[first + i0] =
+                slip_rate(k, F[0], alpha[node], normal_force(k, t));
+              speed = std::abs(V[first + i0]);
+            }
+          else
+            {
+              const double length = std::hypot(F[0], F[1]);
+              speed = slip_rate(k, length, alpha[node], normal_force(k, t));
+              for (unsigned int d = 0; d < 2; ++d)
+                V[first + i0 + d] = length > 0 ? speed * F[d] / length : 0.;
+            }
           if (alpha_rate)
-            alpha_rate[j] = law.state_rate(contact.nodes()[k].params,
-                                           alpha[j],
-                                           std::abs(V[j]));
+            alpha_rate[node] =
+              law.state_rate(contact.nodes()[k].params, alpha[node], speed);
         }
       gather_in_place(V);
       if (alpha_rate)
-        gather_in_place(alpha_rate);
+        gather_in_place(alpha_rate, true);
       if (pore_pressure)
-        for (unsigned int j = 0; j < all_positions.size(); ++j)
+        for (unsigned int j = 0; j < op.n_contact(); ++j)
           if (!std::isfinite(V[j]))
             {
               check_compression(t);
@@ -390,15 +422,15 @@ namespace rsfcycle
 
     template <int dim>
     void
-    GreenFault<dim>::gather_in_place(double *values) const
+    GreenFault<dim>::gather_in_place(double *values, const bool nodes) const
     {
       if (counts.size() > 1)
         MPI_Allgatherv(MPI_IN_PLACE,
                        0,
                        MPI_DATATYPE_NULL,
                        values,
-                       counts.data(),
-                       offsets.data(),
+                       nodes ? node_counts.data() : counts.data(),
+                       nodes ? node_offsets.data() : offsets.data(),
                        MPI_DOUBLE,
                        communicator);
     }
@@ -412,7 +444,7 @@ namespace rsfcycle
       const unsigned int n = op.n_contact();
       slip_rates(y.begin(), y.begin() + n, t, dy.begin(), dy.begin() + n);
       bool finite = true;
-      for (unsigned int j = 0; j < 2 * n; ++j)
+      for (unsigned int j = 0; j < dy.size(); ++j)
         finite = finite && std::isfinite(dy[j]);
       return finite ? 0 : 1;
     }
@@ -422,13 +454,11 @@ namespace rsfcycle
     typename GreenFault<dim>::Vector
     GreenFault<dim>::to_ode(const State &state) const
     {
+      // the slip of every dof, then the state of every node
       const unsigned int n = state.slip.size();
-      Vector             y(2 * n);
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          y[k]     = state.slip[k];
-          y[n + k] = state.alpha[k];
-        }
+      Vector             y(n + state.alpha.size());
+      std::copy(state.slip.begin(), state.slip.end(), y.begin());
+      std::copy(state.alpha.begin(), state.alpha.end(), y.begin() + n);
       return y;
     }
 
@@ -437,7 +467,7 @@ namespace rsfcycle
     FaultState
     GreenFault<dim>::from_ode(const Vector &y, const double t) const
     {
-      const unsigned int n = y.size() / 2;
+      const unsigned int n = op.n_contact();
       State              state;
       state.t = t;
       state.slip.assign(y.begin(), y.begin() + n);
@@ -452,17 +482,21 @@ namespace rsfcycle
     typename GreenFault<dim>::Vector
     GreenFault<dim>::ode_absolute_tolerances(const double relative) const
     {
-      std::vector<double> L;
-      for (const auto &node : contact.nodes())
-        L.push_back(node.params.L);
-      L                    = la::all_gather(communicator, L);
-      const unsigned int n = L.size();
-      Vector             a(2 * n);
-      for (unsigned int k = 0; k < n; ++k)
+      // rtol L for the slip of each of a node's dofs, rtol for its state
+      std::vector<double> L, L_dofs;
+      for (unsigned int k = 0; k < damping.size(); ++k)
         {
-          a[k]     = relative * L[k];
-          a[n + k] = relative;
+          L.push_back(contact.nodes()[k].params.L);
+          for (unsigned int i = dof_start[k]; i < dof_start[k + 1]; ++i)
+            L_dofs.push_back(L.back());
         }
+      L      = la::all_gather(communicator, L);
+      L_dofs = la::all_gather(communicator, L_dofs);
+      Vector a(L_dofs.size() + L.size());
+      for (unsigned int j = 0; j < L_dofs.size(); ++j)
+        a[j] = relative * L_dofs[j];
+      for (unsigned int k = 0; k < L.size(); ++k)
+        a[L_dofs.size() + k] = relative;
       return a;
     }
 

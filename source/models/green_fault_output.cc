@@ -23,7 +23,8 @@ namespace rsfcycle
     output::Sample
     GreenFault<dim>::sample(const State &state) const
     {
-      // this rank's nodes (from first_row in the state of all nodes)
+      // this rank's nodes (their dofs from first_row in the state of all
+      // dofs, their states from first_node)
       const unsigned int  first = op.first_row;
       const unsigned int  n     = state.slip.size();
       const auto         &law   = *parameters.solver.law;
@@ -36,10 +37,16 @@ namespace rsfcycle
       std::vector<std::array<double, 2>> slip(n_own);
       for (unsigned int k = 0; k < n_own; ++k)
         {
-          const auto  &p     = nodes[k].params;
-          const double alpha = state.alpha[first + k];
-          rates[k]           = std::abs(state.rate[first + k]);
-          slip[k]            = {{state.slip[first + k], 0.}};
+          const auto  &p          = nodes[k].params;
+          const double alpha      = state.alpha[first_node + k];
+          slip[k]                 = {{0., 0.}};
+          std::array<double, 2> V = {{0., 0.}};
+          for (unsigned int i = dof_start[k]; i < dof_start[k + 1]; ++i)
+            {
+              slip[k][i - dof_start[k]] = state.slip[first + i];
+              V[i - dof_start[k]]       = state.rate[first + i];
+            }
+          rates[k] = std::hypot(V[0], V[1]);
           // (the pressure evaluated once: the effective normal stress here
           // is normal_force(k, t) / w)
           double sigma = nodes[k].normal_force / nodes[k].weight;
@@ -72,7 +79,7 @@ namespace rsfcycle
           sample.observations.push_back(u);
           sample.observation_rates.push_back(v);
         }
-      sample.statistics.fixed_point_iterations = state.fixed_point_iterations;
+      sample.statistics = state.statistics;
       return sample;
     }
 
@@ -118,11 +125,17 @@ namespace rsfcycle
         b.u.local_element(i) = state.t * b.v.local_element(i);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
-          b.u.local_element(nodes[k].dofs[0]) = state.slip[first + k];
-          b.v.local_element(nodes[k].dofs[0]) = state.rate[first + k];
-          const auto  &node                   = contact.nodes()[k];
-          const double alpha                  = state.alpha[first + k];
-          const double V                      = std::abs(state.rate[first + k]);
+          std::array<double, 2> rate = {{0., 0.}};
+          for (unsigned int d = 0; d < nodes[k].n_dofs; ++d)
+            {
+              const unsigned int i                = first + dof_start[k] + d;
+              b.u.local_element(nodes[k].dofs[d]) = state.slip[i];
+              b.v.local_element(nodes[k].dofs[d]) = state.rate[i];
+              rate[d]                             = state.rate[i];
+            }
+          const auto  &node  = contact.nodes()[k];
+          const double alpha = state.alpha[first_node + k];
+          const double V     = std::hypot(rate[0], rate[1]);
           b.alpha.push_back(alpha);
           if (pore_pressure)
             b.normal_stress.push_back(normal_force(k, state.t) / node.weight);
@@ -134,7 +147,8 @@ namespace rsfcycle
         {
           std::vector<unsigned int> dofs;
           for (const auto &node : nodes)
-            dofs.push_back(node.dofs[0]);
+            for (unsigned int d = 0; d < node.n_dofs; ++d)
+              dofs.push_back(node.dofs[d]);
           static_solver =
             std::make_unique<physics::StaticSolver<dim>>(discretisation, dofs);
         }

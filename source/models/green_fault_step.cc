@@ -15,6 +15,8 @@ namespace rsfcycle
                           const double tau,
                           const State *guess)
     {
+      // (2D: one tangential dof per contact node, so dof j and node j
+      // coincide; Parameters::validate refuses the implicit step in 3D)
       TimerOutput::Scope scope(timer, "Implicit fault step");
       const unsigned int n = old.slip.size(), first = op.first_row,
                          n_own = damping.size();
@@ -56,10 +58,11 @@ namespace rsfcycle
       problem.first            = first;
       problem.communicator     = communicator;
 
-      std::vector<double> w          = guess ? guess->rate : old.rate;
-      std::vector<double> alpha      = guess ? guess->alpha : old.alpha;
-      const double        sigma      = scheme->friction_state_weight();
-      const auto          iterations = time::couple_rate_and_state(
+      std::vector<double>     w     = guess ? guess->rate : old.rate;
+      std::vector<double>     alpha = guess ? guess->alpha : old.alpha;
+      const double            sigma = scheme->friction_state_weight();
+      solvers::StepStatistics statistics;
+      const auto              iterations = time::couple_rate_and_state(
         parameters.solver.coupling,
         parameters.solver.fixed_point_tolerance,
         parameters.solver.max_fixed_point_iterations,
@@ -71,9 +74,11 @@ namespace rsfcycle
           for (unsigned int k = 0; k < n_own; ++k)
             potentials[k].set_state((1 - sigma) * old.alpha[first + k] +
                                     sigma * a[first + k]);
-          return fault_solver
-            .solve(problem, v, parameters.solver.tnnmg_tolerance)
-            .converged;
+          const auto solve =
+            fault_solver.solve(problem, v, parameters.solver.tnnmg_tolerance);
+          statistics.tnnmg_iterations += solve.iterations;
+          statistics.linear_iterations += solve.linear_iterations;
+          return solve.converged;
         },
         [&](const std::vector<double> &v_new,
             const double               weight_new,
@@ -88,7 +93,7 @@ namespace rsfcycle
                                       V,
                                       tau);
             }
-          gather_in_place(a.data());
+          gather_in_place(a.data(), true);
         },
         [this](const std::vector<double> &a1, const std::vector<double> &a2) {
           return state_distance(a1, a2);
@@ -99,9 +104,10 @@ namespace rsfcycle
       const auto e = scheme->new_velocity();
       const auto h = scheme->new_displacement();
       State      next;
-      next.t                      = t + tau;
-      next.fixed_point_iterations = *iterations;
-      next.alpha                  = alpha;
+      next.t                                 = t + tau;
+      next.statistics                        = statistics;
+      next.statistics.fixed_point_iterations = *iterations;
+      next.alpha                             = alpha;
       next.rate.resize(n);
       next.slip.resize(n);
       bool finite = true;
@@ -161,9 +167,10 @@ namespace rsfcycle
           for (unsigned int j = 0; j < p.slip.size(); ++j)
             {
               p.slip[j] += w[i] * s[i]->slip[j];
-              p.alpha[j] += w[i] * s[i]->alpha[j];
               p.rate[j] += w[i] * s[i]->rate[j];
             }
+          for (unsigned int j = 0; j < p.alpha.size(); ++j)
+            p.alpha[j] += w[i] * s[i]->alpha[j];
         }
       return p;
     }

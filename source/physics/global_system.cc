@@ -101,13 +101,8 @@ namespace rsfcycle
         }
       std::vector<double> contact_dofs;
       for (const auto &node : contact.nodes)
-        {
-          if (node.n_dofs != 1)
-            throw std::invalid_argument(
-              "Solver/Bulk = green-function: contact nodes with two "
-              "tangential dofs (3D) are not done yet");
-          contact_dofs.push_back(partitioner.local_to_global(node.dofs[0]));
-        }
+        for (unsigned int d = 0; d < node.n_dofs; ++d)
+          contact_dofs.push_back(partitioner.local_to_global(node.dofs[d]));
 
       GlobalSystem system;
       system.fixed.assign(n, false);
@@ -140,7 +135,7 @@ namespace rsfcycle
       for (const double i : la::all_gather(comm, contact_dofs))
         system.contact_dofs.push_back(static_cast<unsigned int>(i));
       const auto counts = dealii::Utilities::MPI::all_gather(
-        comm, static_cast<unsigned int>(contact.nodes.size()));
+        comm, static_cast<unsigned int>(contact_dofs.size()));
       system.rank_offsets.assign(1, 0);
       for (const unsigned int count : counts)
         system.rank_offsets.push_back(system.rank_offsets.back() + count);

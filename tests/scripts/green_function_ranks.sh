@@ -12,7 +12,14 @@
 #  - the 1-rank operator file refused on 2 ranks in one line naming the
 #    rank counts, non-zero exit, no run folder;
 #  - killed (SIGKILL) after a checkpoint and resumed on 2 ranks: every
-#    output file and checkpoint.bin bitwise those of the uninterrupted run.
+#    output file and checkpoint.bin bitwise those of the uninterrupted run;
+#  - the implicit step on the fault (Integrator = implicit, tolerances
+#    1e-4): the same first event on 1 and 2 ranks (start within 1e-5: the
+#    fault solver stops at its tolerance, which the rounding moves), and
+#    killed and resumed on 2 ranks bitwise (the step-size control's memory
+#    in the checkpoint);
+#  - 3D (tests/meshes/box-fault-3d.prm: two slip components per node, the
+#    state per node): the same first event on 1 and 2 ranks (1e-6).
 # Usage: green_function_ranks.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -104,6 +111,54 @@ for f in time-series.csv events.csv base-profile.csv global.dat checkpoint.bin; 
   cmp -s two/$f killed/$f || { ok=1; echo "$f differs after the resume"; }
 done
 check $ok "SIGKILL + resume on 2 ranks: identical to the uninterrupted run"
+
+implicit=("subsection Time stepping" "  set Integrator = implicit"
+  "  set Tolerance = 1e-4" "end" "subsection Solver"
+  "  set Fixed-point tolerance = 1e-4" "end")
+make_prm implicit-one "${implicit[@]}"; make_prm implicit-two "${implicit[@]}"
+make_prm implicit-killed "${implicit[@]}"
+"${mpi[@]}" 1 "$exe" implicit-one.prm > implicit-one.log 2>&1 &&
+  "${mpi[@]}" 2 "$exe" implicit-two.prm > implicit-two.log 2>&1 &&
+  grep -q "the implicit step on the fault" implicit-two.log
+check $? "implicit step on 1 and 2 ranks"
+same_event implicit-two implicit-one 1e-5
+check $? "implicit step: first event on 2 ranks as on 1"
+"${mpi[@]}" 2 "$exe" implicit-killed.prm > implicit-killed.log 2>&1 &
+pid=$!
+for i in $(seq 1 1200); do
+  [ -f implicit-killed/checkpoint.bin ] && [ -f implicit-killed/time-series.csv ] &&
+    [ "$(wc -l < implicit-killed/time-series.csv)" -gt 1500 ] && break
+  sleep 0.05
+done
+kill -9 $pid; wait $pid 2>/dev/null
+! grep -q "^Summary" implicit-killed.log
+check $? "implicit step killed before its end"
+"${mpi[@]}" 2 "$exe" --resume implicit-killed > implicit-killed-2.log 2>&1
+ok=$?
+for f in time-series.csv events.csv base-profile.csv global.dat checkpoint.bin; do
+  cmp -s implicit-two/$f implicit-killed/$f || { ok=1; echo "$f differs after the resume"; }
+done
+check $ok "implicit step: SIGKILL + resume on 2 ranks identical to the uninterrupted run"
+
+for n in 1 2; do
+  cat > box-$n.prm <<PRM
+include $src/tests/meshes/box-fault-3d.prm
+set Output directory = box-$n
+subsection Solver
+  set Bulk = green-function
+end
+subsection Time stepping
+  set Integrator = runge-kutta
+  set Tolerance = 1e-7
+  set Initial step = 1e5
+  set Maximum step = 3.15576e7
+end
+PRM
+  "${mpi[@]}" $n "$exe" box-$n.prm > box-$n.log 2>&1
+  check $? "3D run on $n rank(s)"
+done
+same_event box-2 box-1 1e-6
+check $? "3D: first event on 2 ranks as on 1"
 
 echo "green-function on ranks: $n_pass passed, $n_fail failed"
 [ $n_fail -eq 0 ]

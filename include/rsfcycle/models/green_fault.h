@@ -18,6 +18,7 @@
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/physics/static_solver.h>
 #include <rsfcycle/solvers/fault_solver.h>
+#include <rsfcycle/solvers/step_statistics.h>
 #include <rsfcycle/time/implicit_model.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/ode_model.h>
@@ -31,18 +32,24 @@ namespace rsfcycle
   {
     using namespace dealii;
 
-    /** The fault's state: slip, state and slip rate of every contact node. */
+    /**
+     * The fault's state: slip and slip rate of every contact dof (the
+     * tangential dofs of the contact nodes: one per node in 2D, two in 3D
+     * but on free-slip walls, a node's together), the state of every
+     * contact node.
+     */
     struct FaultState
     {
-      std::vector<double> slip;  // s [m]
-      std::vector<double> alpha; // log(theta V* / L) [-]
-      std::vector<double> rate;  // V = ds/dt [m/s], from the force balance
+      std::vector<double> slip;  // s [m], per dof
+      std::vector<double> alpha; // log(theta V* / L) [-], per node
+      std::vector<double> rate;  // V = ds/dt [m/s], per dof, the balance's
       double              t = 0; // [s]
       /**
-       * The rate/state fixed point's iterations of the implicit step that
-       * made this state (a statistic, not in checkpoints; 0 otherwise).
+       * The solver counts of the implicit step that made this state (the
+       * fault solver's iterations and CG products as TNNMG's and the linear
+       * ones; statistics, not in checkpoints; zero otherwise).
        */
-      unsigned int fixed_point_iterations = 0;
+      solvers::StepStatistics statistics;
 
       template <class Archive>
       void
@@ -244,10 +251,10 @@ namespace rsfcycle
 
       /**
        * values[offsets[r] ... offsets[r] + counts[r]) from rank r, on every
-       * rank (nothing to do on one).
+       * rank (nothing to do on one): per dof, or per node (`nodes`).
        */
       void
-      gather_in_place(double *values) const;
+      gather_in_place(double *values, bool nodes = false) const;
 
       /**
        * The slip rates of all nodes at the slip s and time t (and, if
@@ -277,12 +284,19 @@ namespace rsfcycle
       physics::Discretisation<dim> discretisation;
       MPI_Comm                     communicator;
       /**
-       * Per rank: its number of contact nodes and the first of them in the
-       * state (the nodes of all ranks on every rank, rank by rank; a rank
+       * Per rank: its number of contact dofs and the first of them in the
+       * state (the dofs of all ranks on every rank, rank by rank; a rank
        * computes its own, from GreenOperator::first_row on, and gathers
-       * the others').
+       * the others'); the same for the nodes (the state alpha).
        */
-      std::vector<int>                counts, offsets;
+      std::vector<int> counts, offsets, node_counts, node_offsets;
+      /** This rank's first node in the state (first dof: op.first_row). */
+      unsigned int first_node = 0;
+      /**
+       * Per own node: its first dof among this rank's dofs (one more
+       * entry: the number of own dofs).
+       */
+      std::vector<unsigned int>       dof_start;
       physics::ContactQuadrature<dim> contact;
       physics::GreenOperator          op;
       double                          setup_seconds = 0;
@@ -294,7 +308,7 @@ namespace rsfcycle
       double compression_error = 0;
       /** The memory of S during the run, the largest over the ranks [MB]. */
       double operator_megabytes = 0;
-      /** Per node: radiation damping eta w [N s/m^dim]. */
+      /** Per own node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
       /** The scene's pore pressure and Darcy velocity (empty: none). */
       std::function<double(const Point<dim> &, double)> pore_pressure,

@@ -40,11 +40,12 @@ namespace rsfcycle
       /** The prescribed velocity of the fixed dofs [m/s] (load). */
       std::vector<double> fixed_velocity;
       /**
-       * The contact's tangential dof of every contact node, the nodes of
-       * rank 0 first (in its own order), then those of rank 1, ...
+       * The contact's tangential dofs (one per contact node in 2D, up to
+       * two in 3D, a node's together), the nodes of rank 0 first (in its
+       * own order), then those of rank 1, ...
        */
       std::vector<unsigned int> contact_dofs;
-      /** First contact node of every rank, then the number of nodes. */
+      /** First contact dof of every rank, then the number of dofs. */
       std::vector<unsigned int> rank_offsets;
       /** The observation rows (every point once). */
       std::vector<ObservationRow> observations;

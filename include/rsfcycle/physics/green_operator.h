@@ -19,9 +19,9 @@ namespace rsfcycle
     /**
      * The fault's Green's functions of a quasi-static elastic bulk
      * (MODEL.md §8.1). The dofs split into the contact's tangential dofs c
-     * (one per contact node: the slip s), the fixed dofs b (the loads'
-     * prescribed displacement u_b(t) = t v_b from t = 0, the held normal
-     * components, hanging nodes) and the others I. With the bulk in
+     * (one per contact node in 2D, two in 3D: the slip s), the fixed dofs b
+     * (the loads' prescribed displacement u_b(t) = t v_b from t = 0, the held
+     * normal components, hanging nodes) and the others I. With the bulk in
      * equilibrium, K_II u_I = f_I - K_Ic s - K_Ib u_b(t), the force the
      * body exerts on contact node k (which friction and radiation damping
      * balance) is

@@ -79,7 +79,7 @@ namespace rsfcycle
         {boundary_id::backstop, ComponentMask(n_components, true)}};
       for (const auto &[id, component] :
            {std::make_pair(boundary_id::contact,
-                           discretisation.normal_component()),
+                           discretisation.held_contact_component()),
             std::make_pair(boundary_id::lateral,
                            discretisation.lateral_component())})
         if (component < n_components)

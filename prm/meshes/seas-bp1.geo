@@ -12,6 +12,8 @@
 // Regenerate: gmsh -2 -format msh2 -o seas-bp1.msh seas-bp1.geo
 // Other domain sizes (the domain-size check in doc/seas-bp1.md):
 // gmsh -2 -format msh2 -setnumber L 200e3 -o seas-bp1-200km.msh seas-bp1.geo
+// prm/seas-bp2-qd.prm runs on 800 km (seas-bp1-800km.msh, in git):
+// gmsh -2 -format msh2 -setnumber L 800e3 -o seas-bp1-800km.msh seas-bp1.geo
 If (!Exists(L))
   L = 400e3;
 EndIf

@@ -182,7 +182,7 @@ namespace rsfcycle
                     else if ((id == boundary_id::lateral &&
                               c == lateral_component()) ||
                              (id == boundary_id::contact &&
-                              c == normal_component()))
+                              c == held_contact_component()))
                       fixed[i] = true;
                   }
             }

@@ -66,7 +66,8 @@ namespace rsfcycle
       else
         load_velocity =
           parse_vector<dim>(prm.get("Load velocity"), "Load velocity");
-      ramp_time = prm.get_double("Ramp time");
+      ramp_time   = prm.get_double("Ramp time");
+      normal_free = prm.get("Contact normal") == "free";
       if (!prm.get("Refine where").empty())
         refine_where =
           FrictionField<dim>::parse_expression(prm.get("Refine where"),
@@ -82,6 +83,14 @@ namespace rsfcycle
         fail("Friction/Normal stress",
              ": must be given with Displacement = antiplane (in-plane "
              "gravity does not load the out-of-plane displacement)");
+      if (normal_free && antiplane)
+        fail("Contact normal",
+             " = free: not with Displacement = antiplane (its one component "
+             "is the slip; there is no normal displacement)");
+      if (normal_free && !friction_field->functions().normal_stress)
+        fail("Contact normal",
+             " = free: needs Friction/Normal stress (the contact then "
+             "carries no normal force of its own)");
       if (load_velocity.norm() == 0)
         fail("Load velocity",
              ": must not be zero (its magnitude is the plate rate v0)");

@@ -191,6 +191,18 @@ namespace rsfcycle
           "boundary tag of the mesh needs a role; faces without a physical "
           "tag have tag 0");
         prm.declare_entry(
+          "Contact normal",
+          "held",
+          Patterns::Selection("held|free"),
+          "The contact's normal displacement. held: zero (a rigid base, or "
+          "the rigid mirror of a problem symmetric about the fault plane, "
+          "SEAS BP1); free: it follows the body and the normal traction on "
+          "the body stays zero, while friction acts on Friction/Normal "
+          "stress (needed) - the fault plane of a problem antisymmetric "
+          "about it (SEAS BP4, BP5: strike-slip in a whole space, one side "
+          "modelled). Not with Displacement = antiplane (its one component "
+          "is the slip)");
+        prm.declare_entry(
           "Materials",
           "",
           Patterns::Anything(),

@@ -83,6 +83,7 @@ check_mesh mesh-tag-without-role "boundary tag 3 has no role" $simplex "$one_mat
 check_mesh mesh-role-without-tag "tag 7 (free) is not a boundary tag" $simplex "$one_material\nset Boundary roles = 1: contact, 2: load, 3: free, 7: free"
 check_mesh mesh-no-contact "no tag has the role contact" $simplex "$one_material\nset Boundary roles = 1: free, 2: load, 3: free"
 check_mesh mesh-two-roles "tag 3 has two roles" $simplex "$one_material\nset Boundary roles = 1: contact, 2: load, 3: free, 3: load"
+check_mesh free-normal-without-stress "Contact normal = free: needs Friction/Normal stress" $simplex "$one_material\nset Contact normal = free"
 check_mesh mesh-unknown-role "Boundary roles" $simplex "$one_material\nset Boundary roles = 1: contact, 2: push, 3: free"
 check_mesh mesh-volume-without-material "volume tag 10 has no material" $simplex 'set Materials = 11: density 900, bulk modulus 5e4, Poisson ratio 0.3, shear viscosity 1e3, bulk viscosity 1e3'
 check_mesh mesh-material-property "Poisson ratio" $simplex 'set Materials = 10: density 900, bulk modulus 5e4, Poisson ratio 0.6, shear viscosity 1e3, bulk viscosity 1e3'
@@ -113,6 +114,7 @@ check_bp1() { # name, expected word, prm body (appended after the include)
 }
 check_bp1 green-inertia "Dynamics = quasi-dynamic" 'subsection Solver\nset Dynamics = dynamic\nend'
 check_bp1 green-quasi-static "Dynamics = quasi-dynamic" 'subsection Solver\nset Dynamics = quasi-static\nend'
+check_bp1 free-normal-antiplane "Contact normal = free: not with Displacement = antiplane" 'subsection Mesh file\nset Contact normal = free\nend'
 check_bp1 green-integrator "Integrator = runge-kutta or implicit" 'subsection Time stepping\nset Integrator = arkode\nend'
 check_bp1 green-viscosity "shear viscosity" 'subsection Mesh file\nset Materials = 10: density 1335, bulk modulus 26.69843e9, Poisson ratio 0.25, shear viscosity 1e12, bulk viscosity 0\nend'
 check_bp1 green-ramp "Ramp time" 'subsection Mesh file\nset Ramp time = 3e7\nend'

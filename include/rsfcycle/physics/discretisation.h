@@ -154,6 +154,18 @@ namespace rsfcycle
       }
 
       /**
+       * The component held at zero on the contact: the normal one, or
+       * numbers::invalid_unsigned_int where the scene's contact normal is
+       * free (or there is no normal component).
+       */
+      unsigned int
+      held_contact_component() const
+      {
+        return scene.contact_normal_free() ? numbers::invalid_unsigned_int :
+                                             normal_component();
+      }
+
+      /**
        * The component fixed on free-slip (lateral) walls: z in 3D,
        * numbers::invalid_unsigned_int in 2D.
        */

@@ -140,6 +140,18 @@ namespace rsfcycle
       }
 
       /**
+       * Whether the contact's normal displacement is free (the normal
+       * traction on the body stays zero, the friction takes normal_stress():
+       * the symmetry plane of an antisymmetric problem); false (the
+       * default): held at zero, a rigid base or mirror.
+       */
+      virtual bool
+      contact_normal_free() const
+      {
+        return false;
+      }
+
+      /**
        * The pore-fluid pressure p [Pa] on the contact as a function of the
        * point (rotated frame) and the time [s]: the friction acts on the
        * effective normal stress |sigma_n| - p. An empty function (the

@@ -73,6 +73,11 @@ namespace rsfcycle
       normal_stress() const override;
       std::function<Tensor<1, dim>(const Point<dim> &)>
       shear_prestress() const override;
+      bool
+      contact_normal_free() const override
+      {
+        return normal_free;
+      }
       std::function<double(const Point<dim> &, double)>
       pore_pressure() const override;
       std::function<double(const Point<dim> &, double)>
@@ -121,6 +126,8 @@ namespace rsfcycle
       std::shared_ptr<const Function<dim>> refine_where;
       /** Displacement = antiplane: load_velocity[0] is out of the plane. */
       bool antiplane = false;
+      /** `Contact normal = free`. */
+      bool normal_free = false;
       /** The load velocity in the rotated frame, parallel to the contact. */
       Tensor<1, dim>                                  load_rotated;
       double                                          ramp_time;

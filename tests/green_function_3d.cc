@@ -27,15 +27,13 @@
 //    strike-slip patch lifts the surface only through its ends, so both
 //    slip components enter) within 1 %.
 // Figures are printed to digits that rounding cannot move.
+#include "run_model.h"
 #include "tests.h"
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
-#include <rsfcycle/models/green_fault.h>
-#include <rsfcycle/parameters.h>
-#include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/registry.h>
 #include <sstream>
 
@@ -62,20 +60,7 @@ namespace
       "set Output directory = " + dir +
       "\nsubsection Mesh file\n  set File = " + source +
       "/meshes/box-fault-3d.msh\nend\n" + settings);
-    Parameters parameters;
-    parameters.parse_parameters(prm);
-    const auto         scene = scenes::make_scene<3>("mesh-file", prm);
-    std::ostringstream log;
-    if (parameters.solver.bulk == SolverParameters::Bulk::green_function)
-      {
-        models::GreenFault<3> fault(parameters, *scene, log);
-        fault.run(prm);
-      }
-    else
-      {
-        ProblemBase<3> problem(parameters, *scene, log);
-        problem.run(prm);
-      }
+    run_model<3>(prm);
     Result result;
     result.events = read_csv(dir + "/events.csv");
     // the observation column follows the 7 fixed ones

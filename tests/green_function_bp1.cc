@@ -23,15 +23,13 @@
 //    peak and surface slip as the Runge-Kutta's.
 // The peak and the slip are printed to 0.01 in log10 V and to 1 mm: the
 // peak is a sampled maximum whose last digits move with any rounding.
+#include "run_model.h"
 #include "tests.h"
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
-#include <rsfcycle/models/green_fault.h>
-#include <rsfcycle/parameters.h>
-#include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/registry.h>
 #include <sstream>
 
@@ -72,20 +70,7 @@ namespace
                                 "  end\n"
                                 "end\n" +
                                 settings);
-    Parameters parameters;
-    parameters.parse_parameters(prm);
-    const auto         scene = scenes::make_scene<2>("mesh-file", prm);
-    std::ostringstream log;
-    if (parameters.solver.bulk == SolverParameters::Bulk::green_function)
-      {
-        models::GreenFault<2> fault(parameters, *scene, log);
-        fault.run(prm);
-      }
-    else
-      {
-        ProblemBase<2> problem(parameters, *scene, log);
-        problem.run(prm);
-      }
+    run_model<2>(prm);
     Result result;
     result.events     = read_csv(dir + "/events.csv");
     const auto series = read_csv(dir + "/time-series.csv");

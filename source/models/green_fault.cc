@@ -204,19 +204,10 @@ namespace rsfcycle
                                          communicator);
       }
 
-      // what the implicit step needs of S and of the quadrature
+      // what the implicit step needs of S
       S_diagonal.clear();
       for (unsigned int i = 0; i < op.n_rows(); ++i)
         S_diagonal.push_back(op.S(i, op.first_row + i));
-      {
-        std::vector<double> weights;
-        for (const auto &node : contact.nodes())
-          weights.push_back(node.weight);
-        all_weights  = la::all_gather(communicator, weights);
-        total_weight = 0;
-        for (const double w : all_weights)
-          total_weight += w;
-      }
 
       // S as an H-matrix: asked for, or automatic from 1000 contact nodes
       // on (below, compression gains nothing: benchmarks/green-function)

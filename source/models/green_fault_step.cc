@@ -128,13 +128,16 @@ namespace rsfcycle
     template <int dim>
     double
     GreenFault<dim>::state_distance(const std::vector<double> &alpha1,
-                                    const std::vector<double> &alpha2) const
+                                    const std::vector<double> &alpha2,
+                                    const bool                 largest) const
     {
-      double sum = 0;
-      for (unsigned int j = 0; j < alpha1.size(); ++j)
-        sum +=
-          all_weights[j] * (alpha1[j] - alpha2[j]) * (alpha1[j] - alpha2[j]);
-      return std::sqrt(sum / total_weight);
+      // this rank's nodes, measured by the contact quadrature (over ranks)
+      const auto own1 = alpha1.begin() + first_node,
+                 own2 = alpha2.begin() + first_node;
+      const std::vector<double> a1(own1, own1 + damping.size()),
+        a2(own2, own2 + damping.size());
+      return largest ? contact.state_max_distance(a1, a2) :
+                       contact.state_distance(a1, a2);
     }
 
 
@@ -142,13 +145,10 @@ namespace rsfcycle
     double
     GreenFault<dim>::error_distance(const State &s1, const State &s2) const
     {
-      if (parameters.time_stepping.error_norm !=
-          TimeSteppingParameters::ErrorNorm::max)
-        return state_distance(s1.alpha, s2.alpha);
-      double largest = 0;
-      for (unsigned int j = 0; j < s1.alpha.size(); ++j)
-        largest = std::max(largest, std::abs(s1.alpha[j] - s2.alpha[j]));
-      return largest;
+      return state_distance(s1.alpha,
+                            s2.alpha,
+                            parameters.time_stepping.error_norm ==
+                              TimeSteppingParameters::ErrorNorm::max);
     }
 
 

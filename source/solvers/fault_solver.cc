@@ -169,8 +169,9 @@ namespace rsfcycle
         return change;
       };
 
-      std::vector<double> g(n_own), h(n_own), z(n_own), q, residual(n_own);
-      std::vector<bool>   held(n_own);
+      std::vector<double> h(n_own), z(n_own), q, residual(n_own), c(n_own),
+        direction(w.size());
+      std::vector<bool> held(n_own);
       for (unsigned int it = 1; it <= max_iterations; ++it)
         {
           statistics.iterations = it;
@@ -206,8 +207,9 @@ namespace rsfcycle
               residual[k]  = held[k] ? 0. : (*p.rhs)[k] - Aw[k] - f.first;
             }
           std::fill(d.begin(), d.end(), 0.);
-          std::vector<double> c(n_own, 0.), direction(w.size(), 0.);
-          const auto          precondition = [&]() {
+          std::fill(c.begin(), c.end(), 0.);
+          std::fill(direction.begin(), direction.end(), 0.);
+          const auto precondition = [&]() {
             double rz = 0;
             for (unsigned int k = 0; k < n_own; ++k)
               {

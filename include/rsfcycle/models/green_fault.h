@@ -244,10 +244,15 @@ namespace rsfcycle
       /** @} */
 
     private:
-      /** The state distance (14) over all nodes (every rank has them). */
+      /**
+       * The state distance (14), or the largest difference at a node, of
+       * two states of all nodes (collective: ContactQuadrature's over this
+       * rank's nodes).
+       */
       double
       state_distance(const std::vector<double> &alpha1,
-                     const std::vector<double> &alpha2) const;
+                     const std::vector<double> &alpha2,
+                     bool                       largest = false) const;
 
       /**
        * values[offsets[r] ... offsets[r] + counts[r]) from rank r, on every
@@ -328,9 +333,6 @@ namespace rsfcycle
       solvers::FaultSolver                    fault_solver;
       /** S_kk of this rank's nodes (taken before compression). */
       std::vector<double> S_diagonal;
-      /** The lumped weights of all nodes and their sum (the distance). */
-      std::vector<double> all_weights;
-      double              total_weight = 0;
     };
   } // namespace models
 } // namespace rsfcycle

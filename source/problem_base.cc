@@ -392,7 +392,9 @@ namespace rsfcycle
                                (rates[k] > 0 ? p.cohesion : 0.));
             log10_states.push_back(p.log_theta(state.alpha[k]) / std::log(10.));
           }
-        sample.shear_stresses    = contact.gather(stresses);
+        sample.shear_stresses = contact.gather(stresses);
+        sample.slip_rate_components =
+          contact.gather(contact.tangential_displacement(state.v));
         sample.log10_states      = contact.gather(log10_states);
         sample.observation_rates = observed_uplift(state.v);
       }

@@ -22,8 +22,10 @@ namespace rsfcycle
       Patterns::Anything(),
       "The SEAS benchmark's name, written as `# problem=` into the header "
       "of the SEAS files (e.g. SEAS Benchmark BP1-QD); empty: no SEAS "
-      "files. The files (fltst_dpXXX, srfst_NAME, global.dat, slip.dat; "
-      "README.md \"Output\") are written for 2D models only");
+      "files. 2D: fltst_dpXXX, srfst_NAME, global.dat, slip.dat; 3D (a "
+      "fault in a plane y = const of the mesh, x along strike, z up): "
+      "fltst_strkXXdpYY, blkst_NAME, global.dat, rupture.dat and the "
+      "strike and depth profiles (README.md \"Output\", doc/seas.md)");
     prm.declare_entry(
       "Fault stations",
       "0, 2.5e3, 5e3, 7.5e3, 10e3, 12.5e3, 15e3, 17.5e3, 20e3, 25e3, "
@@ -78,6 +80,49 @@ namespace rsfcycle
       "rigid mirror, that of the full body, twice the model's); must be "
       "> 0 when SEAS Problem is given");
     prm.declare_entry(
+      "Plane stations",
+      "-36e3, 0; -16e3, 0; 0, 0; 16e3, 0; 36e3, 0; -24e3, 10e3; -16e3, "
+      "10e3; 0, 10e3; 16e3, 10e3; 0, 22e3",
+      Patterns::Anything(),
+      "3D: the on-fault stations as 'x2, x3; x2, x3' [m], x2 the mesh's x "
+      "(along strike), x3 the depth -z (positive down); each writes "
+      "fltst_strk+XXdp+YY (x2 and x3 in units of Plane station names, "
+      "signed), bilinear between the four contact nodes around it (a "
+      "structured grid of the contact there). The default: SEAS BP5's ten "
+      "stations");
+    prm.declare_entry(
+      "Plane station names",
+      "km",
+      Patterns::Selection("km|100 m"),
+      "3D: the unit of the station file names: km, 2 digits (SEAS BP5, "
+      "fltst_strk-36dp+10), or 100 m, 3 digits (SEAS BP4, "
+      "fltst_strk-360dp+100)");
+    prm.declare_entry(
+      "Strike profile",
+      "10e3, -38e3, 38e3, 1e3",
+      Patterns::List(Patterns::Double(), 4, 4),
+      "3D: the along-strike profiles (slip_2_strike.dat, slip_3_strike.dat, "
+      "shear_stress_2_strike.dat, shear_stress_3_strike.dat): depth x3 of "
+      "the line, then first, last and spacing of x2 [m]; within the contact "
+      "nodes");
+    prm.declare_entry(
+      "Depth profile",
+      "0, 0, 39e3, 1e3",
+      Patterns::List(Patterns::Double(), 4, 4),
+      "3D: the down-dip profiles (slip_2_depth.dat ... "
+      "shear_stress_3_depth.dat): x2 of the line, then first, last and "
+      "spacing of the depth x3 [m]; within the contact nodes (those of a "
+      "load boundary, e.g. at the rate-and-state region's bottom, are "
+      "not)");
+    prm.declare_entry(
+      "Rupture threshold",
+      "1e-3",
+      Patterns::Double(0),
+      "3D: rupture.dat lists x2, x3 and the time at which the slip rate "
+      "of a contact node first reaches this value [m/s] in each event "
+      "(interpolated in log10 V between steps; a node counts again once "
+      "the fastest node of the fault is below it)");
+    prm.declare_entry(
       "Mirror model",
       "false",
       Patterns::Bool(),
@@ -108,6 +153,36 @@ namespace rsfcycle
     event_profile_interval = prm.get_double("Event slip profile interval");
     shear_modulus          = prm.get_double("Shear modulus");
     mirror                 = prm.get_bool("Mirror model");
+    plane_stations.clear();
+    for (const auto &item :
+         dealii::Utilities::split_string_list(prm.get("Plane stations"), ';'))
+      {
+        const auto values = dealii::Utilities::split_string_list(item, ',');
+        std::array<double, 2> x{};
+        bool                  ok = values.size() == 2;
+        for (unsigned int i = 0; ok && i < 2; ++i)
+          {
+            char *end = nullptr;
+            x[i]      = std::strtod(values[i].c_str(), &end);
+            ok =
+              end != values[i].c_str() && *end == '\0' && std::isfinite(x[i]);
+          }
+        if (!ok)
+          throw std::invalid_argument("Output/SEAS/Plane stations: '" + item +
+                                      "' is not 'x2, x3' (two numbers [m])");
+        plane_stations.push_back(x);
+      }
+    station_unit_km  = prm.get("Plane station names") == "km";
+    const auto read4 = [&](const std::string &name) {
+      const auto items = dealii::Utilities::split_string_list(prm.get(name));
+      std::array<double, 4> v{};
+      for (unsigned int i = 0; i < 4; ++i)
+        v[i] = std::stod(items[i]);
+      return v;
+    };
+    strike_profile    = read4("Strike profile");
+    depth_profile     = read4("Depth profile");
+    rupture_threshold = prm.get_double("Rupture threshold");
     prm.leave_subsection();
   }
 
@@ -118,16 +193,15 @@ namespace rsfcycle
     if (!enabled())
       return;
     const std::string entry = "Output/SEAS/";
-    if (dimension != 2)
-      throw std::invalid_argument(
-        entry + "Problem = " + problem +
-        ": SEAS files are written for 2D models (a 1D fault) only, this "
-        "run has Dimension = " +
-        std::to_string(dimension));
     if (!(shear_modulus > 0))
       throw std::invalid_argument(
         entry + "Shear modulus = " + format_number(shear_modulus) +
         ": must be > 0 when Problem is given (the moment rate's G)");
+    if (dimension == 3)
+      {
+        validate_plane();
+        return;
+      }
     if (!(slip_profile[2] > 0) || !(slip_profile[1] >= slip_profile[0]))
       throw std::invalid_argument(
         entry + "Slip profile = " + format_number(slip_profile[0]) + ", " +
@@ -152,6 +226,60 @@ namespace rsfcycle
       throw std::invalid_argument(
         entry + "Slip profile: more than 100000 positions; choose a "
                 "larger spacing");
+  }
+
+
+  void
+  SeasParameters::validate_plane() const
+  {
+    const std::string entry = "Output/SEAS/";
+    for (const auto &[name, range] :
+         {std::make_pair(std::string("Strike profile"), strike_profile),
+          std::make_pair(std::string("Depth profile"), depth_profile)})
+      {
+        if (!(range[3] > 0) || !(range[2] >= range[1]))
+          throw std::invalid_argument(
+            entry + name + " = " + format_number(range[0]) + ", " +
+            format_number(range[1]) + ", " + format_number(range[2]) + ", " +
+            format_number(range[3]) +
+            ": needs first <= last and a spacing > 0 (the second to fourth "
+            "numbers)");
+        if ((range[2] - range[1]) / range[3] > 1e5)
+          throw std::invalid_argument(
+            entry + name +
+            ": more than 100000 positions; choose a larger spacing");
+      }
+    if (!(rupture_threshold > 0))
+      throw std::invalid_argument(
+        entry + "Rupture threshold = " + format_number(rupture_threshold) +
+        ": must be > 0");
+    std::vector<std::string> names;
+    for (const auto &x : plane_stations)
+      names.push_back(plane_station_file(x));
+    std::sort(names.begin(), names.end());
+    if (std::adjacent_find(names.begin(), names.end()) != names.end())
+      throw std::invalid_argument(
+        entry + "Plane stations: two stations share the file name " +
+        *std::adjacent_find(names.begin(), names.end()) +
+        " (the names count Plane station names): give them further apart");
+  }
+
+
+  std::string
+  SeasParameters::plane_station_file(const std::array<double, 2> &x) const
+  {
+    const double       unit   = station_unit_km ? 1e3 : 1e2;
+    const int          digits = station_unit_km ? 2 : 3;
+    std::ostringstream name;
+    name << "fltst_";
+    for (const auto &[label, value] :
+         {std::make_pair("strk", x[0]), std::make_pair("dp", x[1])})
+      {
+        const long units = std::lround(value / unit);
+        name << label << (units < 0 ? '-' : '+') << std::setfill('0')
+             << std::setw(digits) << std::labs(units);
+      }
+    return name.str();
   }
 
 

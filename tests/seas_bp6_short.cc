@@ -38,27 +38,6 @@ using namespace rsfcycle;
 
 namespace
 {
-  /** The numeric rows of a SEAS file. */
-  std::vector<std::vector<double>>
-  read_seas(const std::string &file)
-  {
-    std::ifstream                    in(file);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line))
-      {
-        if (line.empty() || line[0] == '#' || std::isalpha(line[0]))
-          continue;
-        std::vector<double> row;
-        std::stringstream   s(line);
-        double              value;
-        while (s >> value)
-          row.push_back(value);
-        rows.push_back(row);
-      }
-    return rows;
-  }
-
   // BP6's hydraulics
   const double q0 = 1.25e-6, beta = 1e-8, phi = 0.1, alpha = 0.1,
                t_off = 8640000;

@@ -5,6 +5,7 @@
 #ifndef rsfcycle_tests_h
 #define rsfcycle_tests_h
 
+#include <cctype>
 #include <deal.II/base/logstream.h>
 #include <fstream>
 #include <iomanip>
@@ -41,6 +42,27 @@ read_csv(const std::string &file)
       std::string         cell;
       while (std::getline(s, cell, ','))
         row.push_back(cell == "-" || cell.empty() ? 0. : std::stod(cell));
+      rows.push_back(row);
+    }
+  return rows;
+}
+
+/** The numeric rows of a SEAS file (comments and the names line left out). */
+inline std::vector<std::vector<double>>
+read_seas(const std::string &file)
+{
+  std::ifstream                    in(file);
+  std::string                      line;
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line))
+    {
+      if (line.empty() || line[0] == '#' || std::isalpha(line[0]))
+        continue;
+      std::vector<double> row;
+      std::stringstream   s(line);
+      double              value;
+      while (s >> value)
+        row.push_back(value);
       rows.push_back(row);
     }
   return rows;

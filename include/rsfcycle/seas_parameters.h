@@ -22,6 +22,16 @@ namespace rsfcycle
     double                event_profile_interval = 1;         // [s]
     double                shear_modulus          = 0;         // [Pa]
     bool                  mirror                 = false;
+    /** 3D: the stations (x2 along strike, x3 depth) [m]. */
+    std::vector<std::array<double, 2>> plane_stations;
+    /** 3D: file names in km (2 digits) or in 100 m (3 digits). */
+    bool station_unit_km = true;
+    /** 3D: depth, first, last, spacing of x2 [m]. */
+    std::array<double, 4> strike_profile{};
+    /** 3D: x2, first, last, spacing of the depth [m]. */
+    std::array<double, 4> depth_profile{};
+    /** 3D: the slip rate of a rupture front in rupture.dat [m/s]. */
+    double rupture_threshold = 1e-3;
 
     bool
     enabled() const
@@ -37,11 +47,19 @@ namespace rsfcycle
 
     /**
      * Checks across entries (throws std::invalid_argument, one line
-     * naming the entry): 2D only, Shear modulus > 0, the profile's range,
-     * no negative station with down-dip names, distinct file names.
+     * naming the entry): Shear modulus > 0; 2D: the profile's range, no
+     * negative station with down-dip names, distinct file names; 3D: the
+     * profiles' ranges, the rupture threshold, distinct station names.
      */
     void
     validate(unsigned int dimension) const;
+
+    /**
+     * The file of the 3D station x = (x2, x3) [m]: fltst_strk+XXdp+YY in
+     * km (2 digits at least) or in units of 100 m (3 digits).
+     */
+    std::string
+    plane_station_file(const std::array<double, 2> &x) const;
 
     /**
      * The file of the fault station x [m] from the origin: fltst_dpXXX,
@@ -50,6 +68,10 @@ namespace rsfcycle
      */
     std::string
     fault_station_file(double x) const;
+
+  private:
+    void
+    validate_plane() const;
   };
 } // namespace rsfcycle
 

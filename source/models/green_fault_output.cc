@@ -34,7 +34,7 @@ namespace rsfcycle
       std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own);
       std::vector<double> pressures(pore_pressure ? n_own : 0),
         darcy(darcy_velocity ? n_own : 0);
-      std::vector<std::array<double, 2>> slip(n_own);
+      std::vector<std::array<double, 2>> slip(n_own), rate_components(n_own);
       for (unsigned int k = 0; k < n_own; ++k)
         {
           const auto  &p          = nodes[k].params;
@@ -46,7 +46,8 @@ namespace rsfcycle
               slip[k][i - dof_start[k]] = state.slip[first + i];
               V[i - dof_start[k]]       = state.rate[first + i];
             }
-          rates[k] = std::hypot(V[0], V[1]);
+          rates[k]           = std::hypot(V[0], V[1]);
+          rate_components[k] = V;
           // (the pressure evaluated once: the effective normal stress here
           // is normal_force(k, t) / w)
           double sigma = nodes[k].normal_force / nodes[k].weight;
@@ -64,10 +65,11 @@ namespace rsfcycle
         sample.pore_pressures = contact.gather(pressures);
       if (darcy_velocity)
         sample.darcy_velocities = contact.gather(darcy);
-      sample.slip_rates     = contact.gather(rates);
-      sample.slip           = contact.gather(slip);
-      sample.shear_stresses = contact.gather(stresses);
-      sample.log10_states   = contact.gather(log10_states);
+      sample.slip_rates           = contact.gather(rates);
+      sample.slip                 = contact.gather(slip);
+      sample.slip_rate_components = contact.gather(rate_components);
+      sample.shear_stresses       = contact.gather(stresses);
+      sample.log10_states         = contact.gather(log10_states);
       for (unsigned int p = 0; p < op.O.m(); ++p)
         {
           double u = op.o0[p] + state.t * op.o1[p], v = op.o1[p];

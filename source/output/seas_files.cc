@@ -5,7 +5,6 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/output/seas_files.h>
-#include <rsfcycle/version.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,13 +15,17 @@ namespace rsfcycle
     SeasFiles::SeasFiles(const std::string    &dir,
                          const SeasParameters &parameters,
                          const Layout         &layout)
-      : parameters(parameters)
+      : SeasFileSet(parameters)
       , pore_pressure(layout.pore_pressure)
       , darcy_velocity(layout.darcy_velocity)
     {
       if (!layout.lateral_positions.empty())
         throw std::invalid_argument(
-          "Output/SEAS/Problem: SEAS files are written for 2D models only");
+          "Output/SEAS/Problem: output::SeasFiles writes 2D models only");
+      if (layout.observation_components != 1)
+        throw std::invalid_argument(
+          "Mesh file/Observation components = all: the SEAS surface "
+          "stations of 2D models take one component (up)");
       const auto        &s = layout.positions;
       const unsigned int n = s.size();
       order.resize(n);
@@ -43,12 +46,12 @@ namespace rsfcycle
       for (const double x : parameters.fault_stations)
         {
           stations.push_back(locate(parameters.origin + x, "Fault stations"));
-          file_paths.push_back(dir + "/" + parameters.fault_station_file(x));
+          add_file(dir, parameters.fault_station_file(x));
         }
       for (const auto &name : layout.station_names)
         {
           surface_names.push_back(name);
-          file_paths.push_back(dir + "/srfst_" + name);
+          add_file(dir, "srfst_" + name);
         }
       const auto  &range = parameters.slip_profile;
       const double count = std::floor((range[1] - range[0]) / range[2] + 1e-9);
@@ -58,8 +61,8 @@ namespace rsfcycle
           profile.push_back(locate(parameters.origin + profile_positions.back(),
                                    "Slip profile"));
         }
-      file_paths.push_back(dir + "/global.dat");
-      file_paths.push_back(dir + "/slip.dat");
+      add_file(dir, "global.dat");
+      add_file(dir, "slip.dat");
     }
 
 
@@ -102,38 +105,6 @@ namespace rsfcycle
     }
 
 
-    std::string
-    SeasFiles::header(const std::string &location) const
-    {
-      std::ostringstream text;
-      text << "# This is the file header:\n"
-           << "# problem=" << parameters.problem << "\n"
-           << "# code=rsfcycle " << version::number << " (commit "
-           << version::commit << ")\n"
-           << "# element_size=" << element_size << " m\n"
-           << "# location=" << location << "\n";
-      return text.str();
-    }
-
-
-    void
-    SeasFiles::open(const bool resume)
-    {
-      if (!writing)
-        return;
-      for (const auto &path : file_paths)
-        {
-          streams.push_back(std::make_unique<std::ofstream>(
-            path, resume ? std::ios::app : std::ios::out));
-          if (!*streams.back())
-            throw file_error(path, errno);
-        }
-      if (!resume)
-        write_headers();
-      flush();
-    }
-
-
     void
     SeasFiles::write_headers()
     {
@@ -155,43 +126,27 @@ namespace rsfcycle
           if (darcy_velocity)
             columns.emplace_back("darcy_vel", "Darcy velocity (m/s)");
           columns.emplace_back("state", "State (log10 s)");
-          *streams[f] << header(location.str());
-          std::string names;
-          for (unsigned int c = 0; c < columns.size(); ++c)
-            {
-              *streams[f] << "# Column #" << c + 1 << " = " << columns[c].second
-                          << "\n";
-              names += (c ? " " : "") + columns[c].first;
-            }
-          *streams[f] << "# The line below lists the names of the data "
-                         "fields:\n"
-                      << names << "\n# Here is the time-series data.\n";
+          write_header(f, location.str(), columns);
         }
       for (const auto &name : surface_names)
-        *streams[f++]
-          << header("off fault, observation point " + name)
-          << "# Column #1 = Time (s)\n"
-             "# Column #2 = Displacement (m)\n"
-             "# Column #3 = Velocity (m/s)\n"
-             "# The line below lists the names of the data fields:\n"
-             "t disp vel\n"
-             "# Here is the time-series data.\n";
-      *streams[f++] << header("global")
-                    << "# Column #1 = Time (s)\n"
-                       "# Column #2 = Max slip rate (log10 m/s)\n"
-                       "# Column #3 = Moment rate (N/s per m along strike)\n"
-                       "# The line below lists the names of the data fields:\n"
-                       "t max_slip_rate moment_rate\n"
-                       "# Here is the time-series data.\n";
-      *streams[f]
-        << header("on fault, slip profiles")
-        << "# Row #1 = 0 0, then the positions along the contact (m)\n"
-           "# Column #1 = Time (s)\n"
-           "# Column #2 = Max slip rate (log10 m/s)\n"
-           "# Column #3 ... = Slip (m)\n"
-           "# The line below lists the names of the data fields:\n"
-           "t max_slip_rate slip\n"
-           "# Here is the data.\n";
+        write_header(f++,
+                     "off fault, observation point " + name,
+                     {{"t", "Time (s)"},
+                      {"disp", "Displacement (m)"},
+                      {"vel", "Velocity (m/s)"}});
+      write_header(f++,
+                   "global",
+                   {{"t", "Time (s)"},
+                    {"max_slip_rate", "Max slip rate (log10 m/s)"},
+                    {"moment_rate", "Moment rate (N/s per m along strike)"}});
+      write_header(f,
+                   "on fault, slip profiles",
+                   {{"t", "Time (s)"},
+                    {"max_slip_rate", "Max slip rate (log10 m/s)"},
+                    {"slip", "Slip (m), one column per position of row 1"}},
+                   "Here is the data.",
+                   "# Row #1 = 0 0, then the positions along the contact "
+                   "(m)\n");
       row << 0. << 0.;
       for (const double x : profile_positions)
         row << x;
@@ -235,19 +190,8 @@ namespace rsfcycle
     {
       if (writing)
         write_step(record.t, *record.sample);
-      // the slip profiles at their own intervals, by the event detector's
-      // definition of an event
-      const double eps = 1e-12 * std::max(1., record.t);
-      if (record.t >= last_profile +
-                        (record.events->in_event() ?
-                           parameters.event_profile_interval :
-                           parameters.profile_interval) -
-                        eps)
-        {
-          if (writing)
-            write_profile(record.t, *record.sample);
-          last_profile = record.t;
-        }
+      if (profile_due(record) && writing)
+        write_profile(record.t, *record.sample);
     }
 
 
@@ -297,53 +241,5 @@ namespace rsfcycle
     }
 
 
-    void
-    SeasFiles::check() const
-    {
-      // after a failed write, errno still holds its reason
-      for (unsigned int i = 0; i < streams.size(); ++i)
-        if (!*streams[i])
-          throw file_error(file_paths[i], errno);
-    }
-
-
-    void
-    SeasFiles::flush()
-    {
-      if (!writing)
-        return;
-      for (const auto &file : streams)
-        file->flush();
-      check();
-    }
-
-
-    std::vector<long long>
-    SeasFiles::sync()
-    {
-      if (!writing)
-        return {};
-      flush();
-      std::vector<long long> result;
-      for (const auto &file : streams)
-        result.push_back(file->tellp());
-      for (const auto &path : file_paths)
-        sync_to_disk(path);
-      return result;
-    }
-
-
-    void
-    SeasFiles::save(boost::archive::binary_oarchive &archive) const
-    {
-      archive << last_profile;
-    }
-
-
-    void
-    SeasFiles::load(boost::archive::binary_iarchive &archive)
-    {
-      archive >> last_profile;
-    }
   } // namespace output
 } // namespace rsfcycle

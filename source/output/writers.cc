@@ -1,6 +1,7 @@
 #include <rsfcycle/output/base_profile.h>
 #include <rsfcycle/output/event_catalogue.h>
 #include <rsfcycle/output/seas_files.h>
+#include <rsfcycle/output/seas_plane_files.h>
 #include <rsfcycle/output/time_series.h>
 #include <rsfcycle/output/writers.h>
 
@@ -17,8 +18,11 @@ namespace rsfcycle
       writers.push_back(std::make_unique<TimeSeries>(dir, layout));
       writers.push_back(std::make_unique<BaseProfile>(dir, layout, out));
       writers.push_back(std::make_unique<EventCatalogue>(dir));
-      if (out.seas.enabled())
+      if (out.seas.enabled() && layout.lateral_positions.empty())
         writers.push_back(std::make_unique<SeasFiles>(dir, out.seas, layout));
+      else if (out.seas.enabled())
+        writers.push_back(
+          std::make_unique<SeasPlaneFiles>(dir, out.seas, layout));
       return writers;
     }
   } // namespace output

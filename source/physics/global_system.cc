@@ -22,9 +22,11 @@ namespace rsfcycle
       const MappingQ1<dim>        mapping;
       const auto                 &hanging = discretisation.hanging_constraints;
       std::vector<ObservationRow> rows;
+      const auto                  directions = scene.observation_directions();
       for (const auto &[name, point] : scene.observation_points())
         {
-          rows.emplace_back();
+          const std::size_t first = rows.size();
+          rows.resize(first + directions.size());
           std::pair<typename DoFHandler<dim>::active_cell_iterator, Point<dim>>
             cell_and_point;
           try
@@ -45,22 +47,25 @@ namespace rsfcycle
           fe_values.reinit(cell_and_point.first);
           std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
           cell_and_point.first->get_dof_indices(indices);
-          const Tensor<1, dim> up  = scene.vertical();
-          ObservationRow      &row = rows.back();
-          for (unsigned int i = 0; i < indices.size(); ++i)
+          for (unsigned int d = 0; d < directions.size(); ++d)
             {
-              const unsigned int c = fe.system_to_component_index(i).first;
-              const double       w =
-                fe_values.shape_value(i, 0) * (antiplane ? 1. : up[c]);
-              if (w == 0)
-                continue;
-              // a hanging node's value is that of the dofs it depends on
-              if (const auto *entries =
-                    hanging.get_constraint_entries(indices[i]))
-                for (const auto &[j, factor] : *entries)
-                  row.emplace_back(j, w * factor);
-              else
-                row.emplace_back(indices[i], w);
+              const Tensor<1, dim> &along = directions[d].second;
+              ObservationRow       &row   = rows[first + d];
+              for (unsigned int i = 0; i < indices.size(); ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  const double       w =
+                    fe_values.shape_value(i, 0) * (antiplane ? 1. : along[c]);
+                  if (w == 0)
+                    continue;
+                  // a hanging node's value is that of the dofs it depends on
+                  if (const auto *entries =
+                        hanging.get_constraint_entries(indices[i]))
+                    for (const auto &[j, factor] : *entries)
+                      row.emplace_back(j, w * factor);
+                  else
+                    row.emplace_back(indices[i], w);
+                }
             }
         }
       return rows;

@@ -73,6 +73,7 @@ namespace rsfcycle
           FrictionField<dim>::parse_expression(prm.get("Refine where"),
                                                section + "/Refine where");
       const std::string observation_text = prm.get("Observation points");
+      all_components = prm.get("Observation components") == "all";
       prm.enter_subsection("Friction");
       friction_field = std::make_unique<FrictionField<dim>>(
         FrictionField<dim>::parse(prm, section + "/Friction"));
@@ -91,6 +92,10 @@ namespace rsfcycle
         fail("Contact normal",
              " = free: needs Friction/Normal stress (the contact then "
              "carries no normal force of its own)");
+      if (all_components && antiplane)
+        fail("Observation components",
+             " = all: not with Displacement = antiplane (one component, out "
+             "of the plane)");
       if (load_velocity.norm() == 0)
         fail("Load velocity",
              ": must not be zero (its magnitude is the plate rate v0)");
@@ -427,6 +432,23 @@ namespace rsfcycle
     MeshFile<dim>::gravity() const
     {
       return rotation * g;
+    }
+
+
+    template <int dim>
+    std::vector<std::pair<std::string, Tensor<1, dim>>>
+    MeshFile<dim>::observation_directions() const
+    {
+      if (!all_components)
+        return {{"", vertical()}};
+      std::vector<std::pair<std::string, Tensor<1, dim>>> directions;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          Tensor<1, dim> axis;
+          axis[d] = 1;
+          directions.emplace_back(std::string("_") + "xyz"[d], rotation * axis);
+        }
+      return directions;
     }
 
 

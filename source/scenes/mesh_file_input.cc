@@ -239,6 +239,15 @@ namespace rsfcycle
                           "(minus Gravity) is recorded every step, as 'name: "
                           "x, y; name: x, y' (3D: x, y, z) in the mesh's "
                           "coordinates [m]; empty: none");
+        prm.declare_entry(
+          "Observation components",
+          "up",
+          Patterns::Selection("up|all"),
+          "What is recorded at each observation point: up, the "
+          "displacement along 'up' (minus Gravity; column NAME_m); all, "
+          "its components along the mesh's x, y (and z) axes (columns "
+          "NAME_x_m, NAME_y_m, NAME_z_m; the SEAS off-fault stations of "
+          "3D models). Not with Displacement = antiplane");
         prm.enter_subsection("Friction");
         FrictionField<dim>::declare_parameters(prm);
         prm.leave_subsection();
@@ -263,6 +272,53 @@ namespace rsfcycle
       prm.leave_subsection();
       if (!seas.enabled())
         return;
+      if (dim == 3)
+        {
+          // the contact's extent in x2 = x and x3 = -z of the mesh
+          const auto [Q, c] = output_frame();
+          double low[2] = {1e300, 1e300}, high[2] = {-1e300, -1e300};
+          for (const auto &face : coarse.active_face_iterators())
+            if (face->at_boundary() &&
+                face->boundary_id() == boundary_id::contact)
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  const Point<dim> x = c + Q * face->vertex(v);
+                  // (rounding of the rotation snapped to x = 0, z = 0)
+                  double s[2] = {x[0], -x[dim - 1]};
+                  for (double &v : s)
+                    v = std::abs(v) < 1e-6 ? 0. : v;
+                  for (unsigned int i = 0; i < 2; ++i)
+                    {
+                      low[i]  = std::min(low[i], s[i]);
+                      high[i] = std::max(high[i], s[i]);
+                    }
+                }
+          const auto inside = [&](const double       x2,
+                                  const double       x3,
+                                  const std::string &entry) {
+            const double tol = 1e-9 * std::max(high[0] - low[0], 1.);
+            if (x2 < low[0] - tol || x2 > high[0] + tol || x3 < low[1] - tol ||
+                x3 > high[1] + tol)
+              throw std::invalid_argument(
+                "Output/SEAS/" + entry + ": (x2, x3) = (" + format_number(x2) +
+                ", " + format_number(x3) + ") m lies outside the contact (x2 " +
+                format_number(low[0]) + " ... " + format_number(high[0]) +
+                " m, x3 " + format_number(low[1]) + " ... " +
+                format_number(high[1]) + " m)");
+          };
+          for (const auto &x : seas.plane_stations)
+            inside(x[0], x[1], "Plane stations");
+          for (const unsigned int i : {1, 2})
+            {
+              inside(seas.strike_profile[i],
+                     seas.strike_profile[0],
+                     "Strike profile");
+              inside(seas.depth_profile[0],
+                     seas.depth_profile[i],
+                     "Depth profile");
+            }
+          return;
+        }
       double length = 0;
       for (const auto &face : coarse.active_face_iterators())
         if (face->at_boundary() && face->boundary_id() == boundary_id::contact)

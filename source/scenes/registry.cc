@@ -1,5 +1,6 @@
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/models/spring_slider.h>
+#include <rsfcycle/output/writers.h>
 #include <rsfcycle/parameter_file.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/scenes/mesh_file.h>
@@ -89,6 +90,11 @@ namespace rsfcycle
                                                                 *scene,
                                                                 fault_log);
               fault->setup(resume);
+              // the outputs refuse what the mesh's contact cannot give
+              // (the SEAS stations and profiles against its nodes) now,
+              // before the run folder is made: their constructors write
+              // nothing
+              output::make_writers(parameters, fault->layout());
             }
         }
 

@@ -61,7 +61,6 @@ check max-iterations "Maximum fixed-point iterations" 'subsection Solver\nset Ma
 check seas-modulus "Shear modulus" 'subsection Output\nsubsection SEAS\nset Problem = BP1\nend\nend'
 check seas-profile "Slip profile" 'subsection Output\nsubsection SEAS\nset Problem = BP1\nset Shear modulus = 1e10\nset Slip profile = 0, 1, 0\nend\nend'
 check seas-stations "Fault stations" 'subsection Output\nsubsection SEAS\nset Problem = BP1\nset Shear modulus = 1e10\nset Fault stations = 0.1, 0.3\nend\nend'
-check seas-3d "2D models" 'set Dimension = 3\nsubsection Output\nsubsection SEAS\nset Problem = BP1\nset Shear modulus = 1e10\nend\nend'
 check bool "Adaptive" 'subsection Time stepping\nset Adaptive = maybe\nend'
 check theta "Theta" 'subsection Solver\nset Theta = 0.4\nend'
 check dynamics "Dynamics" 'subsection Solver\nset Dynamics = quasi\nend'
@@ -124,6 +123,25 @@ check_bp1 green-cohesion "Cohesion = 0" 'subsection Mesh file\nsubsection Fricti
 check_bp1 green-dashpots "dashpots" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: load, 3: free, 4: absorbing, 5: load\nend'
 check green-gravity "Normal stress" 'subsection Solver\nset Dynamics = quasi-dynamic\nset Bulk = green-function\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend'
 check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset Integrator = runge-kutta\nend'
+
+# The SEAS files of 3D models (SEAS BP5 on its coarse 4 km cells): station
+# syntax, a station off the contact (on the coarse mesh, before the
+# operator is built), two stations with one file name, a profile beyond the
+# contact nodes (those of the load are not; after the operator's set-up,
+# still before the run folder), off-fault stations without all components,
+# and all components with antiplane (BP1).
+check_bp5() { # name, expected word, prm body (appended after the include)
+  local name=$1 word=$2 body=$3
+  printf 'include %s/prm/seas-bp5-qd.prm\nset Output directory = run-%s\nsubsection Mesh file\nset File = %s/prm/meshes/seas-bp5.msh\nend\nsubsection Mesh\nset Local refinements = 0\nend\n%b\n' \
+    "$src" "$name" "$src" "$body" > "$name.prm"
+  check_file "$name" "$word"
+}
+check_bp5 seas-plane-syntax "Plane stations: '1, 2, 3' is not 'x2, x3'" 'subsection Output\nsubsection SEAS\nset Plane stations = 1, 2, 3\nend\nend'
+check_bp5 seas-plane-outside "Plane stations: (x2, x3) = (60000, 10000) m lies outside the contact" 'subsection Output\nsubsection SEAS\nset Plane stations = 0, 0; 60e3, 10e3\nend\nend'
+check_bp5 seas-plane-names "share the file name fltst_strk+00dp+00" 'subsection Output\nsubsection SEAS\nset Plane stations = 0, 0; 100, 0\nend\nend'
+check_bp5 seas-depth-profile "Depth profile: (x2, x3) = (0, 37000) m lies outside the contact nodes" ''
+check_bp5 seas-blkst-components "Observation components = up" 'subsection Mesh file\nset Observation components = up\nend\nsubsection Output\nsubsection SEAS\nset Depth profile = 0, 0, 36e3, 1e3\nend\nend'
+check_bp1 observation-components-antiplane "Observation components = all: not with Displacement = antiplane" 'subsection Mesh file\nset Observation components = all\nend'
 
 # A pore pressure (SEAS BP6): only with the Green's functions, only with a
 # prescribed normal stress below it, a Darcy velocity only with it, the

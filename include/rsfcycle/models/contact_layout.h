@@ -24,21 +24,42 @@ namespace rsfcycle
     contact_layout(const physics::Scene<dim>             &scene,
                    const physics::ContactQuadrature<dim> &contact)
     {
-      output::Layout      layout;
-      std::vector<double> s, z, w;
+      output::Layout                     layout;
+      std::vector<double>                s, z, w;
+      std::vector<std::array<double, 3>> points;
+      const auto [Q, c] = scene.output_frame();
       for (const auto &node : contact.nodes())
         {
           s.push_back(scene.along_base_coordinate(node.position));
           z.push_back(node.position[dim - 1]);
           w.push_back(node.weight);
+          const dealii::Point<dim> x = c + Q * node.position;
+          std::array<double, 3>    p{};
+          for (unsigned int d = 0; d < dim; ++d)
+            p[d] = x[d];
+          points.push_back(p);
         }
       layout.positions = contact.gather(s);
       layout.weights   = contact.gather(w);
       if (dim == 3)
-        layout.lateral_positions = contact.gather(z);
+        {
+          layout.lateral_positions = contact.gather(z);
+          layout.points            = contact.gather(points);
+          // the tangential dofs of a node are the rotated frame's x and z
+          // (ContactQuadrature), in the mesh's frame the columns of Q
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              layout.slip_axes[0][d] = Q[d][0];
+              layout.slip_axes[1][d] = Q[d][dim - 1];
+            }
+        }
+      const auto directions         = scene.observation_directions();
+      layout.observation_components = directions.size();
       for (const auto &point : scene.observation_points())
         {
-          layout.observation_names.push_back(point.first + "_m");
+          for (const auto &direction : directions)
+            layout.observation_names.push_back(point.first + direction.first +
+                                               "_m");
           layout.station_names.push_back(point.first);
         }
       layout.convergence_rate        = scene.convergence_rate();

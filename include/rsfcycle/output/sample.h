@@ -25,6 +25,11 @@ namespace rsfcycle
       std::vector<std::array<double, 2>> slip;         // [m]
       std::vector<double>                observations; // see Layout
       solvers::StepStatistics            statistics;
+      /**
+       * The slip rate's components (as those of slip) of every node [m/s]
+       * (with the SEAS files of a 3D model).
+       */
+      std::vector<std::array<double, 2>> slip_rate_components;
       /** The friction stress |sigma_n| mu(V, alpha) + C of every node [Pa]. */
       std::vector<double> shear_stresses;
       /** log10 of the state theta = L / V* exp(alpha) of every node [s]. */
@@ -47,7 +52,8 @@ namespace rsfcycle
      * output::EventDetector); for the SEAS files, the nodes' lumped
      * quadrature weights (length or area of the contact each stands for)
      * and the names of the observation points whose displacement and rate
-     * make surface-station files (none for the spring-slider).
+     * make surface-station files (none for the spring-slider), with the
+     * number of components recorded at each.
      */
     struct Layout
     {
@@ -56,8 +62,18 @@ namespace rsfcycle
       std::vector<std::string> observation_names;
       std::vector<double>      weights;
       std::vector<std::string> station_names;
-      double                   convergence_rate        = 1;
-      bool                     interpolate_event_times = false;
+      /**
+       * The columns recorded per observation point (Sample::observations
+       * holds them point by point): 1, the displacement up, or dim, its
+       * components along the mesh's x, y (, z).
+       */
+      unsigned int observation_components = 1;
+      /** 3D: every node's position in the mesh's frame [m]. */
+      std::vector<std::array<double, 3>> points;
+      /** 3D: the mesh-frame directions of Sample::slip[k][0] and [1]. */
+      std::array<std::array<double, 3>, 2> slip_axes{};
+      double                               convergence_rate        = 1;
+      bool                                 interpolate_event_times = false;
       /** Whether samples carry pore pressures and Darcy velocities. */
       bool pore_pressure = false, darcy_velocity = false;
     };

@@ -1,13 +1,8 @@
 #ifndef rsfcycle_output_seas_files_h
 #define rsfcycle_output_seas_files_h
 
-#include <array>
-#include <fstream>
-#include <memory>
-#include <rsfcycle/output/csv_row.h>
-#include <rsfcycle/output/files.h>
 #include <rsfcycle/output/sample.h>
-#include <rsfcycle/output/writer.h>
+#include <rsfcycle/output/seas_file_set.h>
 #include <rsfcycle/seas_parameters.h>
 #include <string>
 #include <vector>
@@ -37,7 +32,7 @@ namespace rsfcycle
      * surface stations report the benchmark's side x > 0: half of the
      * model's displacement and rate.
      */
-    class SeasFiles : public Writer
+    class SeasFiles : public SeasFileSet
     {
     public:
       /**
@@ -55,37 +50,14 @@ namespace rsfcycle
         return "SEAS files";
       }
 
-      /** The files' paths, in the order of sync()'s sizes. */
-      std::vector<std::string>
-      files() const override
-      {
-        return file_paths;
-      }
-
-      /**
-       * Create the files with their headers or, with `resume`, open them
-       * for appending (they have been cut to their checkpoint sizes).
-       */
-      void
-      open(bool resume) override;
-
       /** The station and global rows of the step, slip.dat when due. */
       void
       write(const Record &record) override;
 
-      /** Flush every file; throws file_error if one failed. */
-      void
-      flush() override;
-
-      std::vector<long long>
-      sync() override;
-
-      void
-      save(boost::archive::binary_oarchive &archive) const override;
-      void
-      load(boost::archive::binary_iarchive &archive) override;
-
     private:
+      void
+      write_headers() override;
+
       /** The station and global rows of an accepted step. */
       void
       write_step(double t, const Sample &sample);
@@ -107,9 +79,6 @@ namespace rsfcycle
       double
       interpolate(const Interpolation &where, const double *values) const;
 
-      void
-      write_headers();
-
       /**
        * Sort the sample's node values by position (slip, rates, stress,
        * state); returns log10 of the maximum slip rate.
@@ -117,27 +86,12 @@ namespace rsfcycle
       double
       sort_sample(const Sample &sample);
 
-      /** Throw file_error if a file failed (after a write). */
-      void
-      check() const;
-
-      std::string
-      header(const std::string &location) const;
-
-      const SeasParameters parameters;
-      /** Whether this process writes the files (the first rank). */
-      const bool                 writing      = is_root();
-      double                     last_profile = 0;
       std::vector<unsigned int>  order;     // nodes by position
       std::vector<double>        positions; // sorted
       std::vector<double>        weights;   // sorted like positions
       std::vector<Interpolation> stations, profile;
       std::vector<double>        profile_positions;
       std::vector<std::string>   surface_names;
-      double                     element_size = 0;
-      std::vector<std::string>   file_paths;
-      std::vector<std::unique_ptr<std::ofstream>> streams;
-      CsvRow                                      row{10, ' '};
       /** The station columns pore_pressure and darcy_vel (SEAS BP6). */
       const bool          pore_pressure, darcy_velocity;
       std::vector<double> slip, rate, log10_rate, stress, log10_state; // sorted

@@ -199,6 +199,18 @@ namespace rsfcycle
       observation_points() const = 0;
 
       /**
+       * What is recorded at every observation point, in this order: the
+       * displacement along each unit direction of the rotated frame, with
+       * the suffix of its column name. The default: the vertical alone
+       * (no suffix).
+       */
+      virtual std::vector<std::pair<std::string, Tensor<1, dim>>>
+      observation_directions() const
+      {
+        return {{"", vertical()}};
+      }
+
+      /**
        * The frame of the VTU output: a point p of the rotated frame is
        * written as c + Q p, a vector v as Q v. The identity (the default)
        * writes the rotated frame.

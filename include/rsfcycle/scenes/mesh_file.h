@@ -89,6 +89,10 @@ namespace rsfcycle
       convergence_rate() const override;
       std::vector<std::pair<std::string, Point<dim>>>
       observation_points() const override;
+
+      /** Up, or with `Observation components = all` the mesh's axes. */
+      std::vector<std::pair<std::string, Tensor<1, dim>>>
+      observation_directions() const override;
       double
       along_base_coordinate(const Point<dim> &p) const override;
       /** The mesh's own coordinates. */
@@ -132,6 +136,7 @@ namespace rsfcycle
       Tensor<1, dim>                                  load_rotated;
       double                                          ramp_time;
       std::vector<std::pair<std::string, Point<dim>>> observation;
+      bool                                            all_components = false;
       std::unique_ptr<const FrictionField<dim>>       friction_field;
 
       /** The rate-weakening (b - a > 0) part of the contact. */

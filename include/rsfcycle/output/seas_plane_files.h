@@ -1,0 +1,121 @@
+#ifndef rsfcycle_output_seas_plane_files_h
+#define rsfcycle_output_seas_plane_files_h
+
+#include <array>
+#include <rsfcycle/output/sample.h>
+#include <rsfcycle/output/seas_file_set.h>
+#include <rsfcycle/seas_parameters.h>
+#include <string>
+#include <vector>
+
+namespace rsfcycle
+{
+  namespace output
+  {
+    /**
+     * The plain-text files of the 3D SCEC SEAS benchmarks (BP4, BP5, BP7;
+     * Jiang et al. 2022, JGR 127, e2021JB023519), for a 3D model whose
+     * fault lies in a plane y = const of the mesh, in the benchmarks' frame:
+     * x2 = the mesh's x (along strike), x3 = -z (depth, positive down), 1 =
+     * the mesh's y (fault normal). Written by the first rank:
+     *  - fltst_strk+XXdp+YY, one per `Plane stations` entry: t slip_2 slip_3
+     *    slip_rate_2 slip_rate_3 shear_stress_2 shear_stress_3 state (s, m,
+     *    m, log10 m/s, log10 m/s, MPa, MPa, log10 s; a rate component's
+     *    log10 of its magnitude), every accepted step, bilinear between the
+     *    four contact nodes around the station (a grid of lines x = const,
+     *    z = const there, as a structured mesh of the contact has);
+     *  - blkst_NAME, one per observation point (`Mesh file/Observation
+     *    components = all`): t disp_1 disp_2 disp_3 vel_1 vel_2 vel_3;
+     *  - global.dat: t max_slip_rate moment_rate (s, log10 m/s, N m/s: G
+     *    int |V| dA over the contact, G the entry Shear modulus);
+     *  - rupture.dat: x2 x3 t, a row whenever a node's slip rate first
+     *    reaches `Rupture threshold` in an event (t interpolated in log10 V);
+     *  - slip_2, slip_3, shear_stress_2, shear_stress_3 along the `Strike
+     *    profile` line (FIELD_strike.dat) and the `Depth profile` line
+     *    (FIELD_depth.dat): a row 0 0 and the positions, then t,
+     *    max_slip_rate and the values, every `Slip profile interval`,
+     *    during events every `Event slip profile interval`.
+     * The shear stress is the friction stress along the slip rate (the
+     * rake is free). With `Mirror model` the off-fault stations report the
+     * benchmark's side y > 0: half of the model's displacement and rate.
+     */
+    class SeasPlaneFiles : public SeasFileSet
+    {
+    public:
+      /**
+       * Throws std::invalid_argument (one line, naming the entry) if the
+       * contact is not in a plane y = const, a station or a profile point
+       * is not surrounded by contact nodes, or the observation points do
+       * not record all components; nothing is written.
+       */
+      SeasPlaneFiles(const std::string    &dir,
+                     const SeasParameters &parameters,
+                     const Layout         &layout);
+
+      std::string
+      name() const override
+      {
+        return "SEAS files";
+      }
+
+      /** The station, global and rupture rows, the profiles when due. */
+      void
+      write(const Record &record) override;
+
+      void
+      save(boost::archive::binary_oarchive &archive) const override;
+      void
+      load(boost::archive::binary_iarchive &archive) override;
+
+    private:
+      void
+      write_headers() override;
+
+      /** A value at a point: four nodes and their bilinear weights. */
+      struct Bilinear
+      {
+        std::array<int, 4>    nodes{};
+        std::array<double, 4> weights{};
+      };
+
+      Bilinear
+      locate(double x2, double x3, const std::string &entry) const;
+
+      double
+      at(const Bilinear &where, const std::vector<double> &values) const;
+
+      /** The node values of the sample in the benchmark's frame. */
+      void
+      fill(const Sample &sample);
+
+      /** Rows of rupture.dat for the nodes that reach the threshold. */
+      void
+      track_rupture(double t);
+
+      // the contact nodes: (x2, x3), lumped weights, a grid of them
+      std::vector<std::array<double, 2>>   plane;
+      std::vector<double>                  weights;
+      std::vector<double>                  grid_x2, grid_x3;
+      std::vector<int>                     grid; // node at (i, j), or -1
+      std::array<std::array<double, 3>, 2> axes;
+
+      std::vector<Bilinear>    stations, strike_line, depth_line;
+      std::vector<double>      strike_x2, depth_x3;
+      std::vector<std::string> block_names;
+      unsigned int first_block = 0, global = 0, rupture = 0, first_profile = 0;
+
+      // the sample's node values
+      std::vector<double> slip_2, slip_3, log10_rate_2, log10_rate_3,
+        log10_rate, stress_2, stress_3, log10_state;
+      double log10_max_rate = 0;
+
+      // rupture fronts: the previous step's log10 V and whether a node may
+      // still arrive in this event
+      double              previous_t = 0;
+      std::vector<double> previous_log10_rate;
+      std::vector<char>   armed;
+    };
+  } // namespace output
+} // namespace rsfcycle
+
+#endif

@@ -15,9 +15,14 @@ if [[ $mode != run && $mode != test ]]; then
 fi
 jobs=${JOBS:-2}
 
-# 1. Debian packages (only if one is missing; needs root).
-packages=(libdeal.ii-dev libsuitesparse-dev libhmat-oss-dev openmpi-bin cmake g++
-  make numdiff python3-matplotlib python3-numpy clang-format-14 git)
+# 1. Debian packages (only if one is missing; needs root). OpenBLAS (the
+# single-threaded build: MPI ranks are the parallelism) becomes the system's
+# BLAS: the Green's-function method's operator build (CHOLMOD) and products
+# (hmat-oss) run 3.5x faster on it than on the reference BLAS
+# (benchmarks/seas-bp5/README.md).
+packages=(libdeal.ii-dev libsuitesparse-dev libhmat-oss-dev libopenblas0-serial
+  openmpi-bin cmake g++ make numdiff python3-matplotlib python3-numpy
+  clang-format-14 git)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)

@@ -5,23 +5,24 @@
 // distance from the fault, z up (the free surface z = 0). Tags: 1 the
 // rate-and-state rectangle |x| <= 50 km, -40 km <= z <= 0 of the fault
 // plane (contact); 5 the rest of the fault plane (creeps at the plate
-// rate: load); 2 the far side y = Ly (load); 6 the strike ends x = +-Lx
-// (load); 3 the free surface z = 0 and 4 the bottom z = -Lz (free);
-// volume 10. Coarse hexahedra of h on the rectangle, growing by r per cell
-// away from it; Mesh/Local refinements halve them toward the fault.
-// Regenerate (in git: h = 4 km, Lx = 200, Ly = Lz = 100 km):
+// rate: load); 2 the far side y = Ly, 6 the strike ends x = +-Lx, 3 the
+// free surface z = 0 and 4 the bottom z = -Lz (prm/seas-bp5-qd.prm: all
+// traction free); volume 10. Coarse hexahedra of h on the rectangle,
+// growing by r per cell away from it; Mesh/Local refinements halve them
+// toward the fault. Regenerate (in git: h = 4 km, Lx = 400, Ly = Lz = 200
+// km; the domain-size study in benchmarks/seas-bp5/README.md):
 //   gmsh -3 -format msh2 -o seas-bp5.msh seas-bp5.geo
-// The domain-size check doubles the far field:
-//   gmsh -3 -format msh2 -setnumber Lx 400e3 -setnumber Ly 200e3
-//        -setnumber Lz 200e3 -o seas-bp5-2x.msh seas-bp5.geo
+// Half and double the far field:
+//   gmsh -3 -format msh2 -setnumber Lx 200e3 -setnumber Ly 100e3
+//        -setnumber Lz 100e3 -o seas-bp5-half.msh seas-bp5.geo
 If (!Exists(Lx))
-  Lx = 200e3;
+  Lx = 400e3;
 EndIf
 If (!Exists(Ly))
-  Ly = 100e3;
+  Ly = 200e3;
 EndIf
 If (!Exists(Lz))
-  Lz = 100e3;
+  Lz = 200e3;
 EndIf
 If (!Exists(h))
   h = 4e3;

@@ -11,6 +11,8 @@
 // With Output/SEAS on, also a digest of the SEAS files (digest_seas()).
 // Under mpirun (NAME.mpirun=N.output) every rank runs and the first writes
 // the digest.
+#include "../tests.h"
+
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -26,46 +28,6 @@
 
 namespace
 {
-  std::vector<std::vector<double>>
-  read_csv(const std::string &file)
-  {
-    std::ifstream                    in(file);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    std::getline(in, line); // header
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        std::stringstream   s(line);
-        std::string         cell;
-        while (std::getline(s, cell, ','))
-          row.push_back(std::stod(cell));
-        rows.push_back(row);
-      }
-    return rows;
-  }
-
-  /** The numeric rows of a SEAS file (header and names line skipped). */
-  std::vector<std::vector<double>>
-  read_seas(const std::string &file)
-  {
-    std::ifstream                    in(file);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line))
-      {
-        if (line.empty() || line[0] == '#' || std::isalpha(line[0]))
-          continue;
-        std::vector<double> row;
-        std::stringstream   s(line);
-        double              value;
-        while (s >> value)
-          row.push_back(value);
-        rows.push_back(row);
-      }
-    return rows;
-  }
-
   /**
    * The SEAS files: rows and last row of each station file (slips and
    * displacements in um, rates as log10 or over v0, stresses in MPa),

@@ -61,9 +61,9 @@ namespace rsfcycle
   {
     /**
      * Geometric multigrid on the levels of the discretisation: the
-     * Dirichlet components of backstop, base normal and lateral walls, the
-     * contact vertices with their lumped weights, and the level cell
-     * matrices of the discretisation.
+     * Dirichlet components of backstop, creep, base normal and free-slip
+     * walls, the contact vertices with their lumped weights, and the level
+     * cell matrices of the discretisation.
      */
     template <int dim>
     std::unique_ptr<solvers::LinearCorrection>
@@ -77,11 +77,19 @@ namespace rsfcycle
       const unsigned int n_components = discretisation.fe.n_components();
       std::vector<typename MG::DirichletBoundary> dirichlet = {
         {boundary_id::backstop, ComponentMask(n_components, true)}};
+      // creep: all but a free normal component
+      std::vector<bool> creep(n_components, true);
+      if (discretisation.normal_component() < n_components &&
+          discretisation.held_contact_component() >= n_components)
+        creep[discretisation.normal_component()] = false;
+      dirichlet.push_back({boundary_id::creep, ComponentMask(creep)});
       for (const auto &[id, component] :
            {std::make_pair(boundary_id::contact,
                            discretisation.held_contact_component()),
             std::make_pair(boundary_id::lateral,
-                           discretisation.lateral_component())})
+                           discretisation.lateral_component()),
+            std::make_pair(boundary_id::parallel,
+                           discretisation.normal_component())})
         if (component < n_components)
           {
             std::vector<bool> mask(n_components, false);

@@ -11,10 +11,16 @@ namespace rsfcycle
    *  - surface: traction free;
    *  - backstop: prescribed velocity v(t) (all components);
    *  - contact: the base y = 0, u.n = 0 and rate-and-state friction;
-   *  - lateral: 3D side walls, no normal velocity (free slip);
+   *  - lateral: 3D side walls across the contact, no normal velocity (free
+   *    slip: z fixed);
+   *  - parallel: walls parallel to the contact, no normal velocity (free
+   *    slip: y fixed);
    *  - absorbing: the truncation of an unbounded body, where outgoing
    *    waves leave: the dashpots (Lysmer and Kuhlemeyer) of the traction
-   *    -rho (c_p v_n n + c_s v_t) (antiplane: -rho c_s v).
+   *    -rho (c_p v_n n + c_s v_t) (antiplane: -rho c_s v);
+   *  - creep: a part of the contact's plane y = 0 that slides at the
+   *    backstop's velocity: the tangential components prescribed as on the
+   *    backstop, the normal one held or free as on the contact.
    */
   namespace boundary_id
   {
@@ -23,6 +29,8 @@ namespace rsfcycle
     constexpr dealii::types::boundary_id contact   = 2;
     constexpr dealii::types::boundary_id lateral   = 3;
     constexpr dealii::types::boundary_id absorbing = 4;
+    constexpr dealii::types::boundary_id creep     = 5;
+    constexpr dealii::types::boundary_id parallel  = 6;
   } // namespace boundary_id
 
   /** Material ids: the regions of MODEL.md §5 (density, viscosity). */

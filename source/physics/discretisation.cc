@@ -172,7 +172,10 @@ namespace rsfcycle
                     if (!is_local(dof))
                       continue;
                     const unsigned int i = local_index(dof);
-                    if (id == boundary_id::backstop)
+                    // creep: the tangential components as on the backstop,
+                    // the normal one as on the contact
+                    if (id == boundary_id::backstop ||
+                        (id == boundary_id::creep && c != normal_component()))
                       {
                         if (!fixed[i] && partitioner->in_local_range(dof) &&
                             !hanging_constraints.is_constrained(dof))
@@ -181,7 +184,10 @@ namespace rsfcycle
                       }
                     else if ((id == boundary_id::lateral &&
                               c == lateral_component()) ||
-                             (id == boundary_id::contact &&
+                             (id == boundary_id::parallel &&
+                              c == normal_component()) ||
+                             ((id == boundary_id::contact ||
+                               id == boundary_id::creep) &&
                               c == held_contact_component()))
                       fixed[i] = true;
                   }

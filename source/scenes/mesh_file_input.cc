@@ -54,7 +54,7 @@ namespace rsfcycle
       parse_roles(const std::string &text)
       {
         const std::set<std::string> allowed = {
-          "contact", "load", "free", "free-slip", "absorbing"};
+          "contact", "load", "creep", "free", "free-slip", "absorbing"};
         std::map<types::boundary_id, std::string> roles;
         for (const auto &item : Utilities::split_string_list(text, ','))
           {
@@ -62,8 +62,8 @@ namespace rsfcycle
             if (pair.size() != 2 || allowed.count(pair[1]) == 0)
               fail("Boundary roles",
                    ": '" + item +
-                     "' is not 'tag: role' with role contact, load, free, "
-                     "free-slip or absorbing");
+                     "' is not 'tag: role' with role contact, load, creep, "
+                     "free, free-slip or absorbing");
             const auto tag = static_cast<types::boundary_id>(
               Utilities::string_to_int(pair[0]));
             const auto [it, inserted] = roles.emplace(tag, pair[1]);
@@ -181,7 +181,11 @@ namespace rsfcycle
           "The role of each physical boundary tag of the mesh, as 'tag: "
           "role, tag: role'. Roles: contact (rate-and-state friction on a "
           "rigid base, zero normal velocity; one plane), load (prescribed "
-          "velocity Load velocity), free (traction free), free-slip (zero "
+          "velocity Load velocity, all components), creep (a part of the "
+          "contact's plane outside the frictional contact that slides at "
+          "Load velocity: its tangential displacement prescribed as on a "
+          "load, its normal one held or free as Contact normal says; SEAS "
+          "BP4, BP5), free (traction free), free-slip (zero "
           "normal velocity; in 2D parallel to the contact, in 3D "
           "perpendicular to it with one normal for all), absorbing (the "
           "truncation of an unbounded body: the dashpot traction -rho (c_p "

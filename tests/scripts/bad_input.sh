@@ -129,7 +129,9 @@ check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset 
 # operator is built), two stations with one file name, a profile beyond the
 # contact nodes (those of the load are not; after the operator's set-up,
 # still before the run folder), off-fault stations without all components,
-# and all components with antiplane (BP1).
+# and all components with antiplane (BP1); a creep face off the contact's
+# plane, and a free contact normal that nothing else holds (the body's
+# rigid motion across the plane).
 check_bp5() { # name, expected word, prm body (appended after the include)
   local name=$1 word=$2 body=$3
   printf 'include %s/prm/seas-bp5-qd.prm\nset Output directory = run-%s\nsubsection Mesh file\nset File = %s/prm/meshes/seas-bp5.msh\nend\nsubsection Mesh\nset Local refinements = 0\nend\n%b\n' \
@@ -141,6 +143,8 @@ check_bp5 seas-plane-outside "Plane stations: (x2, x3) = (60000, 10000) m lies o
 check_bp5 seas-plane-names "share the file name fltst_strk+00dp+00" 'subsection Output\nsubsection SEAS\nset Plane stations = 0, 0; 100, 0\nend\nend'
 check_bp5 seas-depth-profile "Depth profile: (x2, x3) = (0, 37000) m lies outside the contact nodes" ''
 check_bp5 seas-blkst-components "Observation components = up" 'subsection Mesh file\nset Observation components = up\nend\nsubsection Output\nsubsection SEAS\nset Depth profile = 0, 0, 36e3, 1e3\nend\nend'
+check_bp5 creep-off-plane "a creep face (tag 3) is not in the contact's plane" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: free-slip, 3: creep, 4: free, 5: creep, 6: free\nend'
+check_bp5 free-normal-unheld "Contact normal = free: no boundary holds the body's motion normal to the contact" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: free, 3: free, 4: free, 5: creep, 6: free\nend'
 check_bp1 observation-components-antiplane "Observation components = all: not with Displacement = antiplane" 'subsection Mesh file\nset Observation components = all\nend'
 
 # A pore pressure (SEAS BP6): only with the Green's functions, only with a

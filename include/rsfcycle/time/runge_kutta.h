@@ -34,7 +34,11 @@ namespace rsfcycle
      * which costs a step per sample). A checkpoint keeps the state and the
      * step size; a resumed run restarts ARKODE there (its error history is
      * lost, so the resumed steps agree with the uninterrupted run's to the
-     * tolerance, not bitwise).
+     * tolerance, not bitwise). A stage that is not finite (a step far too
+     * large for the explicit method: it overflows before the error test
+     * can reject it) restarts ARKODE with a tenth of the step and caps the
+     * following steps at half the failed one, the cap growing by 5 % per
+     * accepted step.
      */
     template <typename State>
     class RungeKuttaIntegrator : public Integrator<State>
@@ -47,6 +51,7 @@ namespace rsfcycle
         : parameters(parameters)
         , model(model)
         , next_step(parameters.initial_step)
+        , ceiling(parameters.maximum_step)
       {
         if (const std::string why = model.ode_refusal(); !why.empty())
           throw std::invalid_argument(why);
@@ -110,6 +115,7 @@ namespace rsfcycle
             ARKStepGetCurrentStep(arkode, &attempted);
             next_step = std::max(parameters.minimum_step,
                                  0.1 * std::min(attempted, next_step));
+            ceiling   = std::max(parameters.minimum_step, 0.5 * attempted);
             start(current, t);
             --rhs_evaluations; // (its evaluation at t, as above)
             fresh     = false;
@@ -127,6 +133,12 @@ namespace rsfcycle
               model.stiff_alternative() + " is the way out");
           }
         ARKStepGetCurrentStep(arkode, &next_step);
+        if (ceiling < parameters.maximum_step)
+          {
+            ceiling =
+              std::min(parameters.maximum_step, ceiling_growth * ceiling);
+            ARKStepSetMaxStep(arkode, ceiling);
+          }
         last_step = t_reached - t;
         t         = t_reached;
         current   = model.from_ode(values(), t);
@@ -179,6 +191,7 @@ namespace rsfcycle
         IntegratorMemory<State> memory;
         memory.controller = "runge-kutta";
         memory.step_size  = next_step;
+        memory.values     = {ceiling};
         return memory;
       }
 
@@ -188,6 +201,8 @@ namespace rsfcycle
       {
         if (memory.step_size > 0)
           next_step = memory.step_size;
+        if (memory.values.size() == 1 && memory.values[0] > 0)
+          ceiling = memory.values[0];
         if (arkode != nullptr)
           ARKStepFree(&arkode);
         arkode = nullptr;
@@ -312,7 +327,7 @@ namespace rsfcycle
                            ARKODE_DORMAND_PRINCE_7_4_5);
         ARKStepSetInitStep(arkode, next_step);
         ARKStepSetMinStep(arkode, parameters.minimum_step);
-        ARKStepSetMaxStep(arkode, parameters.maximum_step);
+        ARKStepSetMaxStep(arkode, ceiling);
         ARKStepSetMaxErrTestFails(arkode, 20);
         // A step size control without memory (the I controller, and the
         // first step's growth limited like every other's): the step after
@@ -376,6 +391,17 @@ namespace rsfcycle
       std::string                   warning;
       /** Restarts of one advance() after a non-finite right-hand side. */
       static constexpr unsigned int max_restarts = 8;
+      /**
+       * The largest step ARKODE may try [s]: half the step whose stage went
+       * non-finite, growing by ceiling_growth per accepted step back to
+       * `Maximum step`. Without it ARKODE's controller, which knows
+       * nothing of the failure, grows the step straight back to the size
+       * that failed, and every step is tried twice (BP5-QD's interseismic
+       * steps, where an explicit stage of a stiff step overflows before
+       * the error test can reject it).
+       */
+      double                  ceiling        = 0;
+      static constexpr double ceiling_growth = 1.05;
     };
   } // namespace time
 } // namespace rsfcycle

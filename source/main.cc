@@ -124,6 +124,7 @@ namespace
          "  seas-bp5-qd.prm       SEAS BP5-QD (3D half-space, free rake)\n"
          "  seas-bp6-qd-a.prm     SEAS BP6-QD-A (fluid injection, ageing law)\n"
          "  seas-bp6-qd-s.prm     SEAS BP6-QD-S (the same, slip law)\n"
+         "  seas-bp7-qd.prm       SEAS BP7-QD (3D, a 200 m disc, nucleation)\n"
          "  spring-slider.prm     a spring-slider in stick-slip\n"
          "  spring-slider-stable.prm  a stable spring-slider\n";
   }

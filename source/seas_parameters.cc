@@ -93,10 +93,11 @@ namespace rsfcycle
     prm.declare_entry(
       "Plane station names",
       "km",
-      Patterns::Selection("km|100 m"),
+      Patterns::Selection("km|100 m|m"),
       "3D: the unit of the station file names: km, 2 digits (SEAS BP5, "
-      "fltst_strk-36dp+10), or 100 m, 3 digits (SEAS BP4, "
-      "fltst_strk-360dp+100)");
+      "fltst_strk-36dp+10), 100 m, 3 digits (SEAS BP4, "
+      "fltst_strk-360dp+100), or m, 3 digits (SEAS BP7, "
+      "fltst_strk-100dp+100)");
     prm.declare_entry(
       "Strike profile",
       "10e3, -38e3, 38e3, 1e3",
@@ -172,7 +173,11 @@ namespace rsfcycle
                                       "' is not 'x2, x3' (two numbers [m])");
         plane_stations.push_back(x);
       }
-    station_unit_km  = prm.get("Plane station names") == "km";
+    {
+      const std::string names = prm.get("Plane station names");
+      station_unit   = names == "km" ? 1e3 : names == "100 m" ? 1e2 : 1.;
+      station_digits = names == "km" ? 2 : 3;
+    }
     const auto read4 = [&](const std::string &name) {
       const auto items = dealii::Utilities::split_string_list(prm.get(name));
       std::array<double, 4> v{};
@@ -268,16 +273,14 @@ namespace rsfcycle
   std::string
   SeasParameters::plane_station_file(const std::array<double, 2> &x) const
   {
-    const double       unit   = station_unit_km ? 1e3 : 1e2;
-    const int          digits = station_unit_km ? 2 : 3;
     std::ostringstream name;
     name << "fltst_";
     for (const auto &[label, value] :
          {std::make_pair("strk", x[0]), std::make_pair("dp", x[1])})
       {
-        const long units = std::lround(value / unit);
+        const long units = std::lround(value / station_unit);
         name << label << (units < 0 ? '-' : '+') << std::setfill('0')
-             << std::setw(digits) << std::labs(units);
+             << std::setw(station_digits) << std::labs(units);
       }
     return name.str();
   }

@@ -24,8 +24,12 @@ namespace rsfcycle
     bool                  mirror                 = false;
     /** 3D: the stations (x2 along strike, x3 depth) [m]. */
     std::vector<std::array<double, 2>> plane_stations;
-    /** 3D: file names in km (2 digits) or in 100 m (3 digits). */
-    bool station_unit_km = true;
+    /**
+     * 3D: the unit of the file names [m] (km, 100 m or m) and their digits
+     * (2 for km, else 3).
+     */
+    double       station_unit   = 1e3;
+    unsigned int station_digits = 2;
     /** 3D: depth, first, last, spacing of x2 [m]. */
     std::array<double, 4> strike_profile{};
     /** 3D: x2, first, last, spacing of the depth [m]. */

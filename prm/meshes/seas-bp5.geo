@@ -1,6 +1,7 @@
-// SEAS BP5-QD and BP4-QD (Jiang et al. 2022, JGR 127, e2021JB023519): one
-// side of a vertical strike-slip fault, for the antisymmetric reduction of
-// prm/seas-bp5-qd.prm and prm/seas-bp4-qd.prm (the body y >= 0 against a
+// SEAS BP5-QD and BP4-QD (Jiang et al. 2022, JGR 127, e2021JB023519) and
+// BP7-QD: one side of a vertical strike-slip fault, for the antisymmetric
+// reduction of prm/seas-bp5-qd.prm, prm/seas-bp4-qd.prm and
+// prm/seas-bp7-qd.prm (the body y >= 0 against a
 // rigid mirror at y = 0 with a free normal displacement). Coordinates: x
 // along strike, y the distance from the fault, z up. BP5 (whole = 0, the
 // default): a half-space below the free surface z = 0, the rate-and-state
@@ -15,6 +16,10 @@
 // km; the domain-size study in benchmarks/seas-bp5/README.md):
 //   gmsh -3 -format msh2 -o seas-bp5.msh seas-bp5.geo
 //   gmsh -3 -format msh2 -setnumber whole 1 -o seas-bp4.msh seas-bp5.geo
+//   gmsh -3 -format msh2 -setnumber whole 1 -setnumber X 400
+//        -setnumber W 400 -setnumber h 80 -setnumber Lx 3200
+//        -setnumber Ly 1600 -setnumber Lz 3200 -o seas-bp7.msh seas-bp5.geo
+// (BP7: the 800 x 800 m square in a whole space of 6.4 x 1.6 x 6.4 km)
 // Double the far field:
 //   gmsh -3 -format msh2 -setnumber Lx 800e3 -setnumber Ly 400e3
 //        -setnumber Lz 400e3 -o seas-bp5-double.msh seas-bp5.geo
@@ -33,8 +38,14 @@ EndIf
 If (!Exists(h))
   h = 4e3;
 EndIf
+// the rectangle's half length X and its depth (BP4, BP7: half height) W
+If (!Exists(X))
+  X = 50e3;
+EndIf
+If (!Exists(W))
+  W = 40e3;
+EndIf
 r = 1.3;
-X = 50e3; W = 40e3;
 // the number of cells of growth r from h that span a length s
 n_x = Ceil(Log(1 + (r - 1) * (Lx - X) / h) / Log(r));
 n_z = Ceil(Log(1 + (r - 1) * (Lz - W) / h) / Log(r));

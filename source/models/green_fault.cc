@@ -155,6 +155,20 @@ namespace rsfcycle
         if (!r.empty())
           throw std::invalid_argument(r);
 
+      // the shear stress perturbation's nodal forces, lumped as the
+      // prestress's (physics::Discretisation::add_contact_terms)
+      perturbation_forces.assign(dof_start.back(), 0.);
+      perturbation_history = scene.shear_perturbation_history();
+      if (const auto perturbation = scene.shear_perturbation())
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            const auto          &node     = contact.nodes()[k];
+            const Tensor<1, dim> traction = perturbation(node.position);
+            for (unsigned int d = 0; d < nodes[k].n_dofs; ++d)
+              perturbation_forces[dof_start[k] + d] =
+                node.weight * traction[node.components[d]];
+          }
+
       {
         TimerOutput::Scope scope(timer, "Green's function operator");
         // (the gathered system is the set-up's; it goes at the scope's end)
@@ -343,16 +357,19 @@ namespace rsfcycle
       const unsigned int first = op.first_row;
       const auto        &law   = *parameters.solver.law;
       op.apply(s, force_work.begin());
+      const double g = perturbation_factor(t);
       for (unsigned int k = 0; k < damping.size(); ++k)
         {
-          // the node's force F = g0 + t g1 - S s on its dofs; with two, the
+          // the node's force F = g0 + t g1 - S s + g(t) P on its dofs (P
+          // the perturbation's forces); with two, the
           // slip rate has the direction of F (free rake) and the balance
           // holds for its length
           const unsigned int i0 = dof_start[k], n_dofs = dof_start[k + 1] - i0;
           const unsigned int node = first_node + k;
           std::array<double, 2> F = {{0., 0.}};
           for (unsigned int d = 0; d < n_dofs; ++d)
-            F[d] = op.g0[i0 + d] + t * op.g1[i0 + d] - force_work[i0 + d];
+            F[d] = op.g0[i0 + d] + t * op.g1[i0 + d] - force_work[i0 + d] +
+                   g * perturbation_forces[i0 + d];
           double speed;
           if (n_dofs == 1)
             {

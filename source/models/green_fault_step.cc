@@ -25,17 +25,20 @@ namespace rsfcycle
       const double t_step      = t + scheme->load_fraction() * tau;
       const auto  &law         = *parameters.solver.law;
 
-      // r = g0 + t* g1 - S (s_n + tau d0 V_n), the damping c_C eta w, the
-      // friction potentials at t*
+      // r = g0 + t* g1 + g(t*) P - S (s_n + tau d0 V_n) (P the shear
+      // stress perturbation's forces), the damping c_C eta w, the friction
+      // potentials at t*
       std::vector<double> known(n), rhs(n_own), D(n_own);
       for (unsigned int j = 0; j < n; ++j)
         known[j] = old.slip[j] + tau * d[0] * old.rate[j];
       op.apply(known.data(), rhs.data());
+      const double                         g = perturbation_factor(t_step);
       std::vector<friction::NodePotential> potentials(n_own);
       bool                                 compressed = true;
       for (unsigned int k = 0; k < n_own; ++k)
         {
-          rhs[k]                     = op.g0[k] + t_step * op.g1[k] - rhs[k];
+          rhs[k] =
+            op.g0[k] + t_step * op.g1[k] + g * perturbation_forces[k] - rhs[k];
           D[k]                       = c[1] * damping[k];
           potentials[k].law          = &law;
           potentials[k].params       = contact.nodes()[k].params;

@@ -96,16 +96,21 @@ namespace rsfcycle
         {
           if (hanging_constraints.is_constrained(x_dof))
             continue;
-          solvers::ContactNode                 node;
-          std::vector<types::global_dof_index> tangential = {x_dof};
+          solvers::ContactNode node;
+          NodeInfo             info;
+          // (x is component 0, the lateral z component 2)
+          std::vector<std::pair<types::global_dof_index, unsigned int>>
+            tangential = {{x_dof, 0}};
           if (vertex.lateral_dof != numbers::invalid_dof_index)
-            tangential.push_back(vertex.lateral_dof);
-          for (const auto dof : tangential)
+            tangential.emplace_back(vertex.lateral_dof, 2);
+          for (const auto &[dof, component] : tangential)
             if (!fixed[partitioner.global_to_local(dof)])
-              node.dofs[node.n_dofs++] = partitioner.global_to_local(dof);
+              {
+                info.components[node.n_dofs] = component;
+                node.dofs[node.n_dofs++]     = partitioner.global_to_local(dof);
+              }
           if (node.n_dofs == 0)
             continue;
-          NodeInfo info;
           info.position   = vertex.position;
           info.weight     = weights(x_dof);
           info.params     = parameters_at(vertex.position);

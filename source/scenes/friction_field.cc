@@ -62,6 +62,19 @@ namespace rsfcycle
          "body's deformation (SEAS BP1's initial shear stress), constant in "
          "time, acting on the body along the load velocity, a function of "
          "x, y (and z in 3D) [m]. Empty: none"},
+        {"Shear stress perturbation",
+         "",
+         "A shear stress Delta tau [Pa] on the contact added to Shear "
+         "prestress, along the load velocity, a function of x, y (and z in "
+         "3D) [m], multiplied by Shear stress perturbation history at the "
+         "time t (SEAS BP7's prescribed nucleation, 1.75e6 G1(r)). Needs "
+         "Solver/Bulk = green-function. Empty: none"},
+        {"Shear stress perturbation history",
+         "1",
+         "The factor g(t) [-] of Shear stress perturbation at the time t "
+         "[s], a function of t alone (SEAS BP7's G2: a smooth ramp from 0 "
+         "at t = 0 to 1 at t = 1 s, if(t < 1, exp((t - 1)^2 / (t * (t - "
+         "2))), 1)); used only with Shear stress perturbation"},
         {"Radiation damping",
          "",
          "Radiation damping eta [Pa s/m] on the contact (Solver/Dynamics = "
@@ -173,6 +186,32 @@ namespace rsfcycle
       const auto get_of_time = [&](const char *name) {
         return parse_expression(prm.get(name), section + "/" + name, true);
       };
+      if (!prm.get("Shear stress perturbation").empty())
+        {
+          functions.shear_perturbation = get("Shear stress perturbation");
+          const std::string entry =
+            section + "/Shear stress perturbation history";
+          functions.perturbation_history =
+            get_of_time("Shear stress perturbation history");
+          // (a function of t alone: the same at two points, three times)
+          Point<dim> far;
+          for (unsigned int d = 0; d < dim; ++d)
+            far[d] = 1e3 * (d + 1);
+          for (const double t : {0., 0.5, 7.})
+            {
+              functions.perturbation_history->set_time(t);
+              if (functions.perturbation_history->value(Point<dim>()) !=
+                  functions.perturbation_history->value(far))
+                throw std::invalid_argument(
+                  entry + " = " + prm.get("Shear stress perturbation history") +
+                  ": must be a function of the time t alone");
+            }
+        }
+      else if (prm.get("Shear stress perturbation history") != "1")
+        throw std::invalid_argument(
+          section + "/Shear stress perturbation history = " +
+          prm.get("Shear stress perturbation history") +
+          ": needs Shear stress perturbation");
       if (!prm.get("Pore pressure").empty())
         {
           if (!functions.normal_stress)
@@ -253,6 +292,25 @@ namespace rsfcycle
 
     template <int dim>
     std::optional<double>
+    FrictionField<dim>::shear_perturbation(const Point<dim> &x) const
+    {
+      return value_if_given(f.shear_perturbation, x);
+    }
+
+
+    template <int dim>
+    double
+    FrictionField<dim>::perturbation_history(const double t) const
+    {
+      if (!f.perturbation_history)
+        return 0;
+      f.perturbation_history->set_time(t);
+      return f.perturbation_history->value(Point<dim>());
+    }
+
+
+    template <int dim>
+    std::optional<double>
     FrictionField<dim>::pore_pressure(const Point<dim> &x, const double t) const
     {
       if (!f.pore_pressure)
@@ -327,6 +385,8 @@ namespace rsfcycle
         require(*sigma > 0, "Normal stress", *sigma, "> 0");
       if (const auto tau = shear_prestress(x))
         require(true, "Shear prestress", *tau, "finite");
+      if (const auto dtau = shear_perturbation(x))
+        require(true, "Shear stress perturbation", *dtau, "finite");
       if (const auto eta = radiation_damping(x))
         require(*eta >= 0, "Radiation damping", *eta, ">= 0");
       if (const auto p = pore_pressure(x, 0.))

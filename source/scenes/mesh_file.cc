@@ -329,6 +329,31 @@ namespace rsfcycle
 
 
     template <int dim>
+    std::function<Tensor<1, dim>(const Point<dim> &)>
+    MeshFile<dim>::shear_perturbation() const
+    {
+      if (!friction_field->functions().shear_perturbation)
+        return {};
+      return [this](const Point<dim> &p) {
+        return *friction_field->shear_perturbation(to_physical(p)) *
+               load_rotated / load_rotated.norm();
+      };
+    }
+
+
+    template <int dim>
+    std::function<double(double)>
+    MeshFile<dim>::shear_perturbation_history() const
+    {
+      if (!friction_field->functions().shear_perturbation)
+        return {};
+      return [this](const double t) {
+        return friction_field->perturbation_history(t);
+      };
+    }
+
+
+    template <int dim>
     double
     MeshFile<dim>::radiation_damping(const Point<dim> &p,
                                      const Material   &material) const

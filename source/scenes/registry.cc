@@ -78,6 +78,11 @@ namespace rsfcycle
               "Mesh file/Friction/Pore pressure: needs Solver/Bulk = green-function "
               "(the volume method keeps the normal stress constant in "
               "time)");
+          else if (scene->shear_perturbation())
+            throw std::invalid_argument(
+              "Mesh file/Friction/Shear stress perturbation: needs "
+              "Solver/Bulk = green-function (the volume method's shear "
+              "prestress is constant in time)");
         }
 
         /** green-function: the model and its operator (it may refuse). */

@@ -145,6 +145,11 @@ check_bp5 seas-depth-profile "Depth profile: (x2, x3) = (0, 37000) m lies outsid
 check_bp5 seas-blkst-components "Observation components = up" 'subsection Mesh file\nset Observation components = up\nend\nsubsection Output\nsubsection SEAS\nset Depth profile = 0, 0, 36e3, 1e3\nend\nend'
 check_bp5 creep-off-plane "a creep face (tag 3) is not in the contact's plane" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: free-slip, 3: creep, 4: free, 5: creep, 6: free\nend'
 check_bp5 free-normal-unheld "Contact normal = free: no boundary holds the body's motion normal to the contact" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: free, 3: free, 4: free, 5: creep, 6: free\nend'
+# A shear stress perturbation (SEAS BP7's nucleation): only with the
+# Green's functions, its history a function of t alone and only with it.
+check_bp1 perturbation-volume "Shear stress perturbation: needs Solver/Bulk = green-function" 'subsection Mesh file\nsubsection Friction\nset Shear stress perturbation = 1e6\nend\nend\nsubsection Time stepping\nset Integrator = implicit\nend\nsubsection Solver\nset Bulk = volume\nend'
+check_bp1 perturbation-history-space "Shear stress perturbation history = exp(-x): must be a function of the time t alone" 'subsection Mesh file\nsubsection Friction\nset Shear stress perturbation = 1e6\nset Shear stress perturbation history = exp(-x)\nend\nend'
+check_bp1 perturbation-history-alone "Shear stress perturbation history = t: needs Shear stress perturbation" 'subsection Mesh file\nsubsection Friction\nset Shear stress perturbation history = t\nend\nend'
 check_bp1 observation-components-antiplane "Observation components = all: not with Displacement = antiplane" 'subsection Mesh file\nset Observation components = all\nend'
 
 # A pore pressure (SEAS BP6): only with the Green's functions, only with a

@@ -315,6 +315,19 @@ namespace rsfcycle
       double operator_megabytes = 0;
       /** Per own node: radiation damping eta w [N s/m^dim]. */
       std::vector<double> damping;
+      /**
+       * The scene's shear stress perturbation: its spatial part as nodal
+       * forces w_k Delta tau(x_k) e on this rank's dofs (zero without it)
+       * and the factor g(t) (empty: none).
+       */
+      std::vector<double>           perturbation_forces;
+      std::function<double(double)> perturbation_history;
+      /** g(t) of the shear stress perturbation (0 without it). */
+      double
+      perturbation_factor(const double t) const
+      {
+        return perturbation_history ? perturbation_history(t) : 0.;
+      }
       /** The scene's pore pressure and Darcy velocity (empty: none). */
       std::function<double(const Point<dim> &, double)> pore_pressure,
         darcy_velocity;

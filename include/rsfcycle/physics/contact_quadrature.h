@@ -43,6 +43,8 @@ namespace rsfcycle
         friction::Parameters    params;
         types::global_dof_index scalar_dof = 0;
         types::global_dof_index normal_dof = 0;
+        /** The displacement component of each tangential dof. */
+        std::array<unsigned int, 2> components{};
       };
 
       /**

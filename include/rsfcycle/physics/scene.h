@@ -187,6 +187,26 @@ namespace rsfcycle
         return {};
       }
 
+      /**
+       * A shear traction on the body at the contact that changes in time,
+       * added to shear_prestress(): its spatial part [Pa] as a vector of
+       * the rotated frame at a point of the contact, to be multiplied by
+       * shear_perturbation_history() (SEAS BP7's prescribed nucleation).
+       * An empty function (the default): none.
+       */
+      virtual std::function<Tensor<1, dim>(const Point<dim> &)>
+      shear_perturbation() const
+      {
+        return {};
+      }
+
+      /** The factor g(t) [-] of shear_perturbation() at the time t [s]. */
+      virtual std::function<double(double)>
+      shear_perturbation_history() const
+      {
+        return {};
+      }
+
       /** The plate convergence rate v0 [m/s] (event threshold, output). */
       virtual double
       convergence_rate() const = 0;

@@ -43,6 +43,10 @@ namespace rsfcycle
         std::shared_ptr<const Function<dim>> normal_stress;
         /** tau_0 [Pa] along the load; null: none. */
         std::shared_ptr<const Function<dim>> shear_prestress;
+        /** Delta tau [Pa] along the load; null: none. */
+        std::shared_ptr<const Function<dim>> shear_perturbation;
+        /** g(t) [-] of Delta tau, time-dependent; null without it. */
+        std::shared_ptr<Function<dim>> perturbation_history;
         /** eta [Pa s/m]; null: sqrt(G rho) of the material. */
         std::shared_ptr<const Function<dim>> radiation_damping;
         /** p(x, t) [Pa], time-dependent; null: none. */
@@ -100,6 +104,17 @@ namespace rsfcycle
       /** The shear prestress tau_0 at x; none: no prestress. */
       std::optional<double>
       shear_prestress(const Point<dim> &x) const;
+
+      /**
+       * The spatial part Delta tau of the shear stress perturbation at x
+       * [Pa]; none: no perturbation.
+       */
+      std::optional<double>
+      shear_perturbation(const Point<dim> &x) const;
+
+      /** Its factor g(t) [-] at the time t [s] (0 without it). */
+      double
+      perturbation_history(double t) const;
 
       /** The pore pressure p at x and time t [Pa]; none: no pore fluid. */
       std::optional<double>

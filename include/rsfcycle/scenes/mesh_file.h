@@ -73,6 +73,10 @@ namespace rsfcycle
       normal_stress() const override;
       std::function<Tensor<1, dim>(const Point<dim> &)>
       shear_prestress() const override;
+      std::function<Tensor<1, dim>(const Point<dim> &)>
+      shear_perturbation() const override;
+      std::function<double(double)>
+      shear_perturbation_history() const override;
       bool
       contact_normal_free() const override
       {

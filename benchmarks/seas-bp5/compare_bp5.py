@@ -3,11 +3,17 @@
 
 Usage:
   compare_bp5.py --run LABEL=DIR [--run LABEL=DIR ...] [--out FIGDIR]
-                 [--merge SECONDS]
+                 [--merge SECONDS] [--station NAME] [--gaps S1,S2]
+                 [--contour SECONDS] [--unit km|m]
+
+BP7 (benchmarks/seas-bp7/README.md): --station fltst_strk+000dp+000
+--gaps 3.15576e6,0.1 --contour 0.05 --unit m (the hypocentres and the
+contours in m; the peer's events.dat must give them in that unit).
 
 DIR holds a run's SEAS files (rsfcycle writes them without a suffix, the
 HBI converter peer/hbi2seas.py with .dat): global.dat (t, log10 max V,
-moment rate), fltst_strk+00dp+00 (the surface slip at x2 = 0), and, if
+moment rate), the station --station (default fltst_strk+00dp+00, BP5's
+surface slip at x2 = 0), and, if
 present, rupture.dat (x2 x3 t; rsfcycle) or events.dat (HBI's hypocentres)
 and the profiles slip_2_depth.dat, slip_2_strike.dat.
 
@@ -22,9 +28,10 @@ the first event's time, the mean recurrence interval (of the events after
 the first), the median peak slip rate and surface slip from the first run
 given (the reference).
 Writes FIGDIR/max-slip-rate.png, FIGDIR/slip-depth.png,
-FIGDIR/slip-strike.png (cumulative slip every 10 years between events,
-every 5 s in them) and FIGDIR/rupture-LABEL.png (rupture-time contours of
-the first two events from rupture.dat).
+FIGDIR/slip-strike.png (cumulative slip every --gaps S1 seconds between
+events, every S2 in them; default 10 years and 5 s) and
+FIGDIR/rupture-LABEL.png (rupture-time contours, every --contour seconds
+(default 2), of the first two events from rupture.dat).
 """
 import argparse
 import os
@@ -74,10 +81,10 @@ def detect(t, logv, merge):
     return [s for s in spans if s[3] < n]  # completed events only
 
 
-def catalogue(d, merge):
+def catalogue(d, merge, station, scale):
     g = read(path(d, "global.dat"))
     t, logv, mrate = g[:, 0], g[:, 1], g[:, 2]
-    surf = read(path(d, "fltst_strk+00dp+00"))
+    surf = read(path(d, station))
     rupture = path(d, "rupture.dat")
     rupture = read(rupture) if rupture else None
     hbi = path(d, "events.dat")
@@ -93,7 +100,7 @@ def catalogue(d, merge):
             inside = rupture[(rupture[:, 2] >= start - 1) & (rupture[:, 2] <= end)]
             if len(inside):
                 first = inside[np.argmin(inside[:, 2])]
-                hypo = (first[0] / 1e3, first[1] / 1e3)
+                hypo = (first[0] / scale, first[1] / scale)
         elif hbi is not None and k < len(hbi):
             hypo = (hbi[k, 5], hbi[k, 6])
         events.append(
@@ -107,15 +114,21 @@ def main():
     ap.add_argument("--run", action="append", required=True)
     ap.add_argument("--out", default=None)
     ap.add_argument("--merge", type=float, default=3600.0)
+    ap.add_argument("--station", default="fltst_strk+00dp+00")
+    ap.add_argument("--gaps", default=f"{10 * YEAR},5")
+    ap.add_argument("--contour", type=float, default=2.0)
+    ap.add_argument("--unit", choices=("km", "m"), default="km")
     a = ap.parse_args()
+    scale = 1e3 if a.unit == "km" else 1.0
+    gap_between, gap_in = (float(x) for x in a.gaps.split(","))
     runs = []
     for item in a.run:
         label, d = item.split("=", 1)
-        ev, series = catalogue(d, a.merge)
+        ev, series = catalogue(d, a.merge, a.station, scale)
         runs.append((label, d, ev, series))
     for label, d, ev, _ in runs:
         print(f"== {label} ({d}): {len(ev)} events")
-        print("   #   start [yr]  peak [m/s]  duration [s]  Mw     surface slip [m]  hypocentre x2, x3 [km]")
+        print(f"   #   start [yr]  peak [m/s]  duration [s]  Mw     slip at {a.station} [m]  hypocentre x2, x3 [{a.unit}]")
         for k, e in enumerate(ev):
             mw = 2 / 3 * (np.log10(max(e["moment"], 1)) - 9.1)
             print(f"  {k + 1:2d} {e['start'] / YEAR:11.3f} {e['peak']:11.4f} "
@@ -158,7 +171,7 @@ def main():
     ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "max-slip-rate.png"), dpi=120)
-    for line, xlabel in (("depth", "depth x3 [km]"), ("strike", "x2 [km]")):
+    for line, xlabel in (("depth", f"depth x3 [{a.unit}]"), ("strike", f"x2 [{a.unit}]")):
         fig, axes = plt.subplots(1, len(runs), figsize=(5 * len(runs), 4),
                                  squeeze=False)
         for ax, (label, d, ev, _) in zip(axes[0], runs):
@@ -166,11 +179,11 @@ def main():
             if p is None:
                 continue
             data = read(p)
-            x, rows = data[0, 2:] / 1e3, data[1:]
+            x, rows = data[0, 2:] / scale, data[1:]
             last = -1e300
             for r_ in rows:
                 seismic = r_[1] >= THRESHOLD
-                gap = 5 if seismic else 10 * YEAR
+                gap = gap_in if seismic else gap_between
                 if r_[0] - last >= gap:
                     if line == "depth":
                         ax.plot(r_[2:], x, color="r" if seismic else "b", lw=0.4)
@@ -200,13 +213,14 @@ def main():
             if len(sel) < 3:
                 continue
             tt = sel[:, 2] - sel[:, 2].min()
-            c = ax.tricontour(sel[:, 0] / 1e3, sel[:, 1] / 1e3, tt,
-                              levels=np.arange(0, tt.max() + 2, 2.0),
+            c = ax.tricontour(sel[:, 0] / scale, sel[:, 1] / scale, tt,
+                              levels=np.arange(0, tt.max() + a.contour,
+                                               a.contour),
                               cmap="viridis")
             fig.colorbar(c, ax=ax, label="rupture time [s]")
             ax.invert_yaxis()
-            ax.set_xlabel("x2 [km]")
-            ax.set_ylabel("depth [km]")
+            ax.set_xlabel(f"x2 [{a.unit}]")
+            ax.set_ylabel(f"depth [{a.unit}]")
             ax.set_title(f"{label}: event {k + 1} at {e['start'] / YEAR:.1f} yr")
             ax.set_aspect("equal")
         fig.tight_layout()

@@ -1,0 +1,84 @@
+#!/bin/bash
+# Independent peer run of SEAS BP7-QD (aging law) with HBI (github.com/sozawa94/hbi), problem 3dp (whole space).
+# HBI is patched with ../../seas-bp5/peer/hbi-bp5.patch and then hbi-bp7.patch (the prescribed nucleation).
+#
+# usage: benchmarks/seas-bp7/peer/run.sh OUTDIR
+#   PEER_SRC   HBI checkout to use/create (default /work/peers/hbi-bp7; NOT the BP4/BP5 one). If it is
+#              absent, it is cloned from HBI_GIT (default: the local mirror, else GitHub), checked out
+#              at the pinned commit and patched with hbi-bp5.patch, then hbi-bp7.patch.
+#   CELL       element size in m (default 10; must divide 800 into an even count)
+#   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
+#   DTMAX      max time step in s (default 1e6)
+#   TEND       end time in s (default 3.15576e8 = 10 yr of 365.25 d)
+#   NUC        1 (default): input keyword `bp7nucleation T`; 0: no keyword (the patch is then inert)
+#   NICE       nice level (default 10)
+# Writes the SEAS files to OUTDIR (fltst_strk*.dat, global.dat, profiles, events.dat, timing.txt,
+# summary.txt, check.txt) and keeps HBI's native output in OUTDIR/native/.
+set -euo pipefail
+
+HBI_COMMIT=29b8f905ec5cc4fd83e180da792660ae9825543a   # sozawa94/hbi, 2026-03-06 "Revise input file descriptions"
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+PATCHES=("$HERE/../../seas-bp5/peer/hbi-bp5.patch" "$HERE/hbi-bp7.patch")
+PY=/usr/bin/python3
+PEER_SRC=${PEER_SRC:-/work/peers/hbi-bp7}
+CELL=${CELL:-10}
+EPS=${EPS:-1e-6}
+DTMAX=${DTMAX:-1e6}
+TEND=${TEND:-3.15576e8}
+NUC=${NUC:-1}
+NICE=${NICE:-10}
+OUT=${1:?usage: $0 OUTDIR}
+
+# ---------------------------------------------------------------- source + build (outside the repo)
+if [ ! -d "$PEER_SRC/.git" ]; then
+  if [ -z "${HBI_GIT:-}" ]; then
+    if [ -d /work/.mirror/sozawa94+hbi/repo ]; then HBI_GIT=/work/.mirror/sozawa94+hbi/repo
+    else HBI_GIT=https://github.com/sozawa94/hbi.git; fi
+  fi
+  git clone -q "$HBI_GIT" "$PEER_SRC"
+  git -C "$PEER_SRC" checkout -q "$HBI_COMMIT"
+fi
+head=$(git -C "$PEER_SRC" rev-parse HEAD)
+if [ "$head" != "$HBI_COMMIT" ]; then
+  echo "ERROR: $PEER_SRC is at $head, expected pinned $HBI_COMMIT" >&2; exit 1
+fi
+changed=$(git -C "$PEER_SRC" diff --name-only)
+if [ -z "$changed" ]; then                       # clean pinned tree: apply both patches in order
+  for p in "${PATCHES[@]}"; do git -C "$PEER_SRC" apply "$p"; done
+else                                             # already patched? undo both on a copy and compare with HEAD
+  tmp=$(mktemp -d)
+  for f in $changed; do mkdir -p "$tmp/$(dirname "$f")"; cp "$PEER_SRC/$f" "$tmp/$f"; done
+  ok=1
+  ( cd "$tmp" && git init -q . && git apply -R "${PATCHES[1]}" && git apply -R "${PATCHES[0]}" ) 2>/dev/null || ok=0
+  for f in $changed; do [ $ok = 1 ] && git -C "$PEER_SRC" show "HEAD:$f" | cmp -s - "$tmp/$f" || ok=0; done
+  rm -rf "$tmp"
+  [ $ok = 1 ] || { echo "ERROR: $PEER_SRC has local changes that are not exactly hbi-bp5.patch + hbi-bp7.patch" >&2; exit 1; }
+fi
+if [ ! -x "$PEER_SRC/lhbiem" ] || [ "${PATCHES[0]}" -nt "$PEER_SRC/lhbiem" ] || [ "${PATCHES[1]}" -nt "$PEER_SRC/lhbiem" ]; then
+  ( cd "$PEER_SRC" && make clean >/dev/null &&
+    nice -n "$NICE" make F90="mpifort -fallow-argument-mismatch -ffree-form -ffree-line-length-none -O3 -march=native -fopenmp" \
+      > build.log 2>&1 ) || { tail -20 "$PEER_SRC/build.log"; exit 1; }
+fi
+BIN=$PEER_SRC/lhbiem
+
+# ---------------------------------------------------------------- input, run, convert
+N=$OUT/native
+rm -rf "$N"; mkdir -p "$N/output"
+nucopt=""; [ "$NUC" = 1 ] || nucopt="--no-nucleation"
+$PY "$HERE/bp7_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tend "$TEND" $nucopt
+echo "== BP7-QD: HBI $HBI_COMMIT + hbi-bp5.patch + hbi-bp7.patch (nucleation NUC=$NUC), problem 3dp," \
+     "cell ${CELL} m, eps_r $EPS, dtmax $DTMAX s, t_end $TEND s -> $OUT"
+# one MPI rank (HBI runs without mpirun as a singleton), one OpenMP thread
+( cd "$N" && OMP_NUM_THREADS=1 /usr/bin/time -v -o time.txt nice -n "$NICE" "$BIN" bp7.in > log.txt 2>&1 )
+grep -q "Time exceeds tmax" "$N/log.txt" || { echo "HBI did not reach tmax" >&2; tail "$N/log.txt"; exit 1; }
+nice -n "$NICE" $PY "$HERE/hbi2seas_bp7.py" "$N" "$OUT" --commit "$HBI_COMMIT"
+{
+  echo "code=HBI $HBI_COMMIT + hbi-bp5.patch + hbi-bp7.patch"
+  echo "case=BP7-QD-A problem=3dp cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s t_end=${TEND}s nucleation=$NUC OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
+  echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
+  echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: another engineer's MPI job ran on the 2 cores)"
+  grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"
+} > "$OUT/timing.txt"
+cat "$OUT/timing.txt"
+$PY "$HERE/bp7_summary.py" "$OUT" | tee "$OUT/summary.txt"
+$PY "$HERE/bp7_check.py" "$N" | tee "$OUT/check.txt"

@@ -16,7 +16,6 @@
 # and keeps HBI's native output in OUTDIR/native/.
 set -euo pipefail
 
-HBI_COMMIT=29b8f905ec5cc4fd83e180da792660ae9825543a   # sozawa94/hbi, 2026-03-06 "Revise input file descriptions"
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 PATCH=$HERE/hbi-bp5.patch
 PY=/usr/bin/python3
@@ -29,29 +28,9 @@ NICE=${NICE:-10}
 OUT=${1:?usage: PEER_SRC=DIR $0 OUTDIR}
 
 # ---------------------------------------------------------------- source + build (outside the repo)
-if [ ! -d "$PEER_SRC/.git" ]; then
-  if [ -z "${HBI_GIT:-}" ]; then
-    if [ -d /work/.mirror/sozawa94+hbi/repo ]; then HBI_GIT=/work/.mirror/sozawa94+hbi/repo
-    else HBI_GIT=https://github.com/sozawa94/hbi.git; fi
-  fi
-  git clone -q "$HBI_GIT" "$PEER_SRC"
-  git -C "$PEER_SRC" checkout -q "$HBI_COMMIT"
-fi
-head=$(git -C "$PEER_SRC" rev-parse HEAD)
-if [ "$head" != "$HBI_COMMIT" ]; then
-  echo "ERROR: $PEER_SRC is at $head, expected pinned $HBI_COMMIT" >&2; exit 1
-fi
-if git -C "$PEER_SRC" apply --check "$PATCH" 2>/dev/null; then
-  git -C "$PEER_SRC" apply "$PATCH"
-elif ! git -C "$PEER_SRC" apply --reverse --check "$PATCH" 2>/dev/null; then
-  echo "ERROR: $PEER_SRC has local changes that are not exactly $PATCH" >&2; exit 1
-fi
-if [ ! -x "$PEER_SRC/lhbiem" ] || [ "$PATCH" -nt "$PEER_SRC/lhbiem" ]; then
-  ( cd "$PEER_SRC" && make clean >/dev/null &&
-    nice -n "$NICE" make F90="mpifort -fallow-argument-mismatch -ffree-form -ffree-line-length-none -O3 -march=native -fopenmp" \
-      > build.log 2>&1 ) || { tail -20 "$PEER_SRC/build.log"; exit 1; }
-fi
-BIN=$PEER_SRC/lhbiem
+source "$HERE/../../hbi-peer.sh"
+hbi_checkout_and_build "$PEER_SRC" "$NICE" "$PATCH"
+BIN=$HBI_BIN
 
 # ---------------------------------------------------------------- input, run, convert
 N=$OUT/native

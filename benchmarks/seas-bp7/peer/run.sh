@@ -16,7 +16,6 @@
 # summary.txt, check.txt) and keeps HBI's native output in OUTDIR/native/.
 set -euo pipefail
 
-HBI_COMMIT=29b8f905ec5cc4fd83e180da792660ae9825543a   # sozawa94/hbi, 2026-03-06 "Revise input file descriptions"
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 PATCHES=("$HERE/../../seas-bp5/peer/hbi-bp5.patch" "$HERE/hbi-bp7.patch")
 PY=/usr/bin/python3
@@ -30,36 +29,9 @@ NICE=${NICE:-10}
 OUT=${1:?usage: $0 OUTDIR}
 
 # ---------------------------------------------------------------- source + build (outside the repo)
-if [ ! -d "$PEER_SRC/.git" ]; then
-  if [ -z "${HBI_GIT:-}" ]; then
-    if [ -d /work/.mirror/sozawa94+hbi/repo ]; then HBI_GIT=/work/.mirror/sozawa94+hbi/repo
-    else HBI_GIT=https://github.com/sozawa94/hbi.git; fi
-  fi
-  git clone -q "$HBI_GIT" "$PEER_SRC"
-  git -C "$PEER_SRC" checkout -q "$HBI_COMMIT"
-fi
-head=$(git -C "$PEER_SRC" rev-parse HEAD)
-if [ "$head" != "$HBI_COMMIT" ]; then
-  echo "ERROR: $PEER_SRC is at $head, expected pinned $HBI_COMMIT" >&2; exit 1
-fi
-changed=$(git -C "$PEER_SRC" diff --name-only)
-if [ -z "$changed" ]; then                       # clean pinned tree: apply both patches in order
-  for p in "${PATCHES[@]}"; do git -C "$PEER_SRC" apply "$p"; done
-else                                             # already patched? undo both on a copy and compare with HEAD
-  tmp=$(mktemp -d)
-  for f in $changed; do mkdir -p "$tmp/$(dirname "$f")"; cp "$PEER_SRC/$f" "$tmp/$f"; done
-  ok=1
-  ( cd "$tmp" && git init -q . && git apply -R "${PATCHES[1]}" && git apply -R "${PATCHES[0]}" ) 2>/dev/null || ok=0
-  for f in $changed; do [ $ok = 1 ] && git -C "$PEER_SRC" show "HEAD:$f" | cmp -s - "$tmp/$f" || ok=0; done
-  rm -rf "$tmp"
-  [ $ok = 1 ] || { echo "ERROR: $PEER_SRC has local changes that are not exactly hbi-bp5.patch + hbi-bp7.patch" >&2; exit 1; }
-fi
-if [ ! -x "$PEER_SRC/lhbiem" ] || [ "${PATCHES[0]}" -nt "$PEER_SRC/lhbiem" ] || [ "${PATCHES[1]}" -nt "$PEER_SRC/lhbiem" ]; then
-  ( cd "$PEER_SRC" && make clean >/dev/null &&
-    nice -n "$NICE" make F90="mpifort -fallow-argument-mismatch -ffree-form -ffree-line-length-none -O3 -march=native -fopenmp" \
-      > build.log 2>&1 ) || { tail -20 "$PEER_SRC/build.log"; exit 1; }
-fi
-BIN=$PEER_SRC/lhbiem
+source "$HERE/../../hbi-peer.sh"
+hbi_checkout_and_build "$PEER_SRC" "$NICE" "${PATCHES[@]}"
+BIN=$HBI_BIN
 
 # ---------------------------------------------------------------- input, run, convert
 N=$OUT/native

@@ -151,10 +151,10 @@ def main():
           "medians)")
     for label, _, ev, _ in runs[1:]:
         s = summary(ev)
-        for key, unit, scale in (("second", "yr", YEAR), ("interval", "yr", YEAR),
-                                 ("peak", "m/s", 1), ("slip", "m", 1)):
-            print(f"  {label:12s} {key:9s} {s[key] / scale:10.4f} {unit:4s} "
-                  f"vs {r[key] / scale:10.4f}: {100 * (s[key] / r[key] - 1):+7.2f} %")
+        for key, unit, per in (("second", "yr", YEAR), ("interval", "yr", YEAR),
+                               ("peak", "m/s", 1), ("slip", "m", 1)):
+            print(f"  {label:12s} {key:9s} {s[key] / per:10.4f} {unit:4s} "
+                  f"vs {r[key] / per:10.4f}: {100 * (s[key] / r[key] - 1):+7.2f} %")
         print(f"  {label:12s} Mw        {s['mw']:10.4f}      vs {r['mw']:10.4f}: "
               f"{s['mw'] - r['mw']:+.4f}")
     if not a.out:

@@ -7,6 +7,7 @@
 #  - the fixed-point iteration capped at 1 iteration,
 #  - TNNMG capped at 1 iteration,
 #  - material parameters whose matrices overflow (stopped in the set-up);
+# a failed trial step in a run that goes on (said in the progress lines);
 # and two that are not failures of a step: a pore pressure that overtakes
 # the normal stress (stopped with place and time), and an explicit
 # Runge-Kutta that crawls on a stiff ODE (one warning line).
@@ -36,6 +37,25 @@ run_case tnnmg 'subsection Solver\nset Maximum TNNMG iterations = 1\nset Inner t
 [ -f tnnmg/checkpoint.bin ] || { n_fail=$((n_fail + 1)); echo "FAILED: no checkpoint"; }
 run_case overflow 'subsection Wedge\nset Bulk modulus = 1e308\nend' \
   "non-finite entries"
+# A trial step that fails inside a run that goes on: TNNMG capped at 2
+# iterations fails some of the controller's larger trials (3 of the wedge's
+# first 100 s); the run must end normally and its progress lines must say
+# why a trial was refused, once per new failure. With the shipped cap it
+# must say nothing.
+printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 100\nset Output directory = refused\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Write VTU = false\nset Progress interval = 0\nend\nsubsection Solver\nset Maximum TNNMG iterations = %s\nset Inner tolerance factor = 0\nend\n' "$src" "$src" 2 > refused.prm
+sed 's/= refused$/= not-refused/; s/Maximum TNNMG iterations = 2$/Maximum TNNMG iterations = 100/' refused.prm > not-refused.prm
+"$exe" refused.prm > refused.log 2>&1
+status=$?
+"$exe" not-refused.prm > not-refused.log 2>&1
+status2=$?
+if [ $status -eq 0 ] && [ $status2 -eq 0 ] &&
+   grep -q "^    a trial step was refused: t = .* TNNMG did not converge (relative change .* after 2 iterations)" refused.log &&
+   ! grep -q "trial step was refused" not-refused.log; then
+  n_pass=$((n_pass + 1))
+else
+  n_fail=$((n_fail + 1)); echo "FAILED refused-trial (exit $status, $status2)"; grep -c "trial step" refused.log not-refused.log
+fi
+grep -m1 "trial step was refused" refused.log
 # A pore pressure that overtakes the normal stress during a run (BP6 with
 # a tenth of its normal stress, 200 m cells): stopped with the place and
 # the time, exit status 1.

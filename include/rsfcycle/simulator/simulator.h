@@ -177,6 +177,13 @@ namespace rsfcycle
       last_checkpoint;
     output::Sample last_sample;
     /**
+     * The model's last failed trial step as last reported in a progress
+     * line: a new one is printed once, so that a run whose steps stay
+     * small because every larger trial fails (the solver, not the error
+     * estimate) says why.
+     */
+    std::string reported_failure;
+    /**
      * The ETA extrapolates the mean rate (wall seconds per simulated
      * second) since the start (or resume) of the run until a whole
      * seismic cycle has been run, from the first event that starts in

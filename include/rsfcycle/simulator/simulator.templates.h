@@ -445,6 +445,13 @@ namespace rsfcycle
           << " linear iterations; ";
     log << integrator->n_spatial_problems() << " " << integrator->work_unit()
         << " this step" << std::endl;
+    if (std::string why = model.last_failure();
+        !why.empty() && why != reported_failure)
+      {
+        log << "    a trial step was refused: "
+            << why << std::endl;
+        reported_failure = std::move(why);
+      }
     for (const auto &writer : writers)
       writer->flush();
   }

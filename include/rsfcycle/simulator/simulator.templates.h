@@ -448,8 +448,7 @@ namespace rsfcycle
     if (std::string why = model.last_failure();
         !why.empty() && why != reported_failure)
       {
-        log << "    a trial step was refused: "
-            << why << std::endl;
+        log << "    a trial step was refused: " << why << std::endl;
         reported_failure = std::move(why);
       }
     for (const auto &writer : writers)

@@ -467,6 +467,13 @@ namespace rsfcycle
                       Double(1e-300),
                       "An event is where the maximum slip rate exceeds this "
                       "multiple of the convergence rate v0 [-]");
+    prm.declare_entry("Event merge time",
+                      "0",
+                      Double(0),
+                      "A rise above the event threshold at most this long "
+                      "after an event's end continues that event instead "
+                      "of starting a new one, e.g. the ringing after a fully "
+                      "dynamic rupture; 0 keeps every rise a new event [s]");
     prm.declare_entry("Progress interval",
                       "10",
                       Double(0),
@@ -507,6 +514,7 @@ namespace rsfcycle
     profile_interval       = prm.get_double("Profile interval");
     event_profile_interval = prm.get_double("Event profile interval");
     event_threshold        = prm.get_double("Event threshold");
+    event_merge_time       = prm.get_double("Event merge time");
     progress_interval      = prm.get_double("Progress interval");
     write_vtu              = prm.get_bool("Write VTU");
     transition_time        = prm.get_double("Transition time");

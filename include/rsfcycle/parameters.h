@@ -212,6 +212,7 @@ namespace rsfcycle
     double       profile_interval       = 1;
     double       event_profile_interval = 0.005;
     double       event_threshold        = 10;
+    double       event_merge_time       = 0;
     double       progress_interval      = 10;
     bool         write_vtu              = true;
     double       transition_time        = 0;

@@ -11,11 +11,13 @@ namespace rsfcycle
     EventDetector::EventDetector(const double        threshold,
                                  const double        convergence_rate,
                                  std::vector<double> positions,
-                                 const bool          interpolate_times)
+                                 const bool          interpolate_times,
+                                 const double        merge_time)
       : threshold(threshold)
       , v0(convergence_rate)
       , positions(std::move(positions))
       , interpolate_times(interpolate_times)
+      , merge_time(merge_time)
     {}
 
 
@@ -59,7 +61,28 @@ namespace rsfcycle
       const double max_rate = (fastest == rates.end()) ? 0. : *fastest;
       bool         ended    = false;
 
-      if (!active && max_rate > threshold)
+      // an ending event: continued by a new crossing within merge_time of
+      // its end, closed once merge_time has passed below the threshold
+      if (pending)
+        {
+          const double rise =
+            (max_rate > threshold) ?
+              (interpolate_times ? crossing(t, max_rate) : t) :
+              t;
+          if (rise - running.end <= merge_time && max_rate > threshold)
+            {
+              pending = false;
+              active  = true;
+            }
+          else if (t - running.end > merge_time)
+            {
+              catalogue.push_back(running);
+              pending = false;
+              ended   = true;
+            }
+        }
+
+      if (!active && !pending && max_rate > threshold)
         {
           const unsigned int nucleation = fastest - rates.begin();
           active                        = true;
@@ -104,9 +127,14 @@ namespace rsfcycle
                            std::hypot(slip_at_end[k][0] - slip_at_start[k][0],
                                       slip_at_end[k][1] - slip_at_start[k][1]));
               running.slip = peak - v0 * running.duration();
-              catalogue.push_back(running);
-              active = false;
-              ended  = true;
+              active       = false;
+              if (merge_time > 0)
+                pending = true;
+              else
+                {
+                  catalogue.push_back(running);
+                  ended = true;
+                }
             }
         }
       previous_slip     = slip;

@@ -2,6 +2,7 @@
 #define rsfcycle_output_events_h
 
 #include <array>
+#include <boost/serialization/version.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -64,6 +65,12 @@ namespace rsfcycle
      * accurate as the solution even where the steps are long compared with
      * the rise of V (the spring-slider against its ARKODE reference, which
      * is sampled sparsely).
+     *
+     * With a `merge_time` > 0, a crossing of the threshold that comes at
+     * most `merge_time` after an event's end continues that event (the
+     * ringing of a fully dynamic run after its rupture): the event is
+     * closed, and update() returns true, only once `merge_time` has passed
+     * below the threshold; its end is the last drop below the threshold.
      */
     class EventDetector
     {
@@ -71,7 +78,8 @@ namespace rsfcycle
       EventDetector(double              threshold,
                     double              convergence_rate,
                     std::vector<double> positions,
-                    bool                interpolate_times = false);
+                    bool                interpolate_times = false,
+                    double              merge_time        = 0);
 
       /**
        * Record the accepted state at time t. `slip` holds the tangential
@@ -83,10 +91,21 @@ namespace rsfcycle
              const std::vector<double>                &rates,
              const std::vector<std::array<double, 2>> &slip);
 
+      /** True while the maximum slip rate is above the threshold. */
       bool
       in_event() const
       {
         return active;
+      }
+
+      /**
+       * True while the last event has dropped below the threshold but may
+       * still be continued (`merge_time`).
+       */
+      bool
+      ending() const
+      {
+        return pending;
       }
 
       /** Completed events. */
@@ -96,14 +115,14 @@ namespace rsfcycle
         return catalogue;
       }
 
-      /** Number of events started (completed and running). */
+      /** Number of events started (completed, running and ending). */
       unsigned int
       n_started() const
       {
-        return catalogue.size() + (active ? 1 : 0);
+        return catalogue.size() + ((active || pending) ? 1 : 0);
       }
 
-      /** The event in progress (valid if in_event()). */
+      /** The event in progress (valid if in_event() or ending()). */
       const Event &
       current() const
       {
@@ -127,13 +146,19 @@ namespace rsfcycle
                     double        transition_time,
                     unsigned int  transition_events) const;
 
+      /**
+       * Class version 1 (BOOST_CLASS_VERSION below) adds `pending`;
+       * `merge_time` is the run's parameter, not stored.
+       */
       template <class Archive>
       void
-      serialize(Archive &ar, const unsigned int)
+      serialize(Archive &ar, const unsigned int version)
       {
         ar &threshold &v0 &positions &interpolate_times &active &running
           &previous_slip &slip_at_start &last_start &catalogue &previous_time
             &previous_max_rate;
+        if (version >= 1)
+          ar &pending;
       }
 
     private:
@@ -150,7 +175,9 @@ namespace rsfcycle
       double                             threshold, v0;
       std::vector<double>                positions;
       bool                               interpolate_times = false;
+      double                             merge_time        = 0;
       bool                               active            = false;
+      bool                               pending           = false;
       Event                              running;
       std::vector<std::array<double, 2>> previous_slip, slip_at_start;
       double                             last_start = -1;
@@ -160,5 +187,7 @@ namespace rsfcycle
     };
   } // namespace output
 } // namespace rsfcycle
+
+BOOST_CLASS_VERSION(rsfcycle::output::EventDetector, 1)
 
 #endif

@@ -134,7 +134,7 @@ namespace rsfcycle
 
     /** Log the event that ended or started at this step. */
     void
-    log_events(bool was_in_event, bool ended);
+    log_events(bool was_in_event, bool was_ending, bool ended);
 
     /** Progress line and solver statistics every `Progress interval`. */
     void

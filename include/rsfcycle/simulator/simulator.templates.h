@@ -162,7 +162,8 @@ namespace rsfcycle
       output::EventDetector(parameters.output.event_threshold * v0,
                             v0,
                             layout.positions,
-                            layout.interpolate_event_times));
+                            layout.interpolate_event_times,
+                            parameters.output.event_merge_time));
     LoopState &s = *loop_state;
     s.state      = model.initial_state();
     writers      = output::make_writers(parameters, layout);
@@ -337,7 +338,9 @@ namespace rsfcycle
     summary.final_time         = s.t;
     summary.events             = s.events.events();
     summary.last_event_running = s.events.in_event();
-    if (summary.last_event_running)
+    // an event within its merge time has ended unless a resumed run
+    // continues it
+    if (s.events.in_event() || s.events.ending())
       summary.events.push_back(s.events.current());
     summary.wall_time = std::chrono::duration<double>(
                           std::chrono::steady_clock::now() - wall_start)
@@ -361,11 +364,12 @@ namespace rsfcycle
     s.max_fixed_point =
       std::max(s.max_fixed_point, sample.statistics.fixed_point_iterations);
     const bool was_in_event = s.events.in_event();
+    const bool was_ending   = s.events.ending();
     const bool ended = s.events.update(s.t, sample.slip_rates, sample.slip);
     const bool stop_for_events =
       ended && parameters.run.stop_after_events > 0 &&
       s.events.events().size() >= parameters.run.stop_after_events;
-    log_events(was_in_event, ended);
+    log_events(was_in_event, was_ending, ended);
 
     output::Record step   = record(sample);
     step.step_size        = dt;
@@ -381,19 +385,27 @@ namespace rsfcycle
 
   template <typename State>
   void
-  Simulator<State>::log_events(const bool was_in_event, const bool ended)
+  Simulator<State>::log_events(const bool was_in_event,
+                               const bool was_ending,
+                               const bool ended)
   {
     const auto &events = loop_state->events;
     const auto  t      = loop_state->t;
     if (ended)
       {
         const auto &e = events.events().back();
-        log << "    event " << events.events().size() << " ended at t = " << t
-            << " s: peak slip rate " << e.peak_slip_rate / v0
+        log << "    event " << events.events().size()
+            << " ended at t = " << (was_ending ? e.end : t);
+        if (was_ending)
+          log << " s (closed at t = " << t << " s, after the event merge time)";
+        log << " s: peak slip rate " << e.peak_slip_rate / v0
             << " v0, rupture width " << e.rupture_width() << " m, slip "
             << e.slip * 1e6 << " um" << std::endl;
       }
-    if (!was_in_event && events.in_event())
+    if (was_ending && !ended && events.in_event())
+      log << "    event " << events.n_started() << " continues at t = " << t
+          << " s, within the event merge time of its end" << std::endl;
+    else if (!was_in_event && events.in_event())
       log << "    event " << events.n_started()
           << " starts at t = " << events.current().start
           << " s near s = " << events.current().nucleation_position

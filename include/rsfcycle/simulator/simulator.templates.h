@@ -395,10 +395,10 @@ namespace rsfcycle
       {
         const auto &e = events.events().back();
         log << "    event " << events.events().size()
-            << " ended at t = " << (was_ending ? e.end : t);
+            << " ended at t = " << (was_ending ? e.end : t) << " s";
         if (was_ending)
-          log << " s (closed at t = " << t << " s, after the event merge time)";
-        log << " s: peak slip rate " << e.peak_slip_rate / v0
+          log << " (closed at t = " << t << " s, after the event merge time)";
+        log << ": peak slip rate " << e.peak_slip_rate / v0
             << " v0, rupture width " << e.rupture_width() << " m, slip "
             << e.slip * 1e6 << " um" << std::endl;
       }

@@ -16,6 +16,7 @@
 // km; the domain-size study in benchmarks/seas-bp5/README.md):
 //   gmsh -3 -format msh2 -o seas-bp5.msh seas-bp5.geo
 //   gmsh -3 -format msh2 -setnumber whole 1 -o seas-bp4.msh seas-bp5.geo
+//   (seas-bp4.msh, 3 MB, is not in git: quickstart.sh makes it)
 //   gmsh -3 -format msh2 -setnumber whole 1 -setnumber X 400
 //        -setnumber W 400 -setnumber h 80 -setnumber Lx 3200
 //        -setnumber Ly 1600 -setnumber Lz 3200 -o seas-bp7.msh seas-bp5.geo

@@ -22,17 +22,11 @@ PYTHON=${PYTHON:-/usr/bin/python3}
 # the patch: nodes with -10 <= x <= 10 km and 4 <= depth <= 14 km slip 1 m
 PATCH="-10000 10000 -14000 -4000"
 
-die() {
-    echo "run.sh: $*" >&2
-    exit 1
-}
+# die, help_if_asked
+. "$HERE/../../common.sh"
 
 [ $# -ge 1 ] || die "usage: OKADA_SRC=DIR run.sh OUTDIR [REFINEMENTS...]"
-case $1 in -h | --help)
-    sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'
-    exit 0
-    ;;
-esac
+help_if_asked "$1"
 outdir=$1
 shift
 refinements=${*:-1 2}

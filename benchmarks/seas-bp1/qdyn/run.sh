@@ -33,10 +33,8 @@ QDYN_COMMIT=e06edb1db4d402fbc4581e086a019d30e433cc56
 HERE=$(cd "$(dirname "$0")" && pwd)
 PYTHON=${PYTHON:-/usr/bin/python3}
 
-die() {
-    echo "run.sh: $*" >&2
-    exit 1
-}
+# die
+. "$HERE/../../common.sh"
 
 outdir=
 cases="A"

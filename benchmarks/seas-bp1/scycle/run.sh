@@ -32,17 +32,11 @@ SCYCLE_COMMIT=74a132f6d280f550dd7469faa7b1039a52b24156
 HERE=$(cd "$(dirname "$0")" && pwd)
 PYTHON=${PYTHON:-/usr/bin/python3}
 
-die() {
-    echo "run.sh: $*" >&2
-    exit 1
-}
+# die, help_if_asked
+. "$HERE/../../common.sh"
 
 [ $# -ge 1 ] || die "usage: SCYCLE_SRC=DIR run.sh OUTDIR [make_input.py options]"
-case $1 in -h | --help)
-    sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'
-    exit 0
-    ;;
-esac
+help_if_asked "$1"
 outdir=$1
 shift
 [ -n "${SCYCLE_SRC:-}" ] || die "set SCYCLE_SRC to a clone of https://github.com/kali-allison/SCycle"

@@ -1,0 +1,17 @@
+# Shell helpers of the benchmark scripts (sourced, as common.py is imported).
+
+# die MESSAGE: "SCRIPT: MESSAGE" on standard error, exit status 1.
+die() {
+    echo "$(basename "$0"): $*" >&2
+    exit 1
+}
+
+# help_if_asked ARGUMENT: for -h or --help, print the script's header
+# comment (line 2 up to the line `set -e...`) and exit 0.
+help_if_asked() {
+    case ${1:-} in -h | --help)
+        sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'
+        exit 0
+        ;;
+    esac
+}

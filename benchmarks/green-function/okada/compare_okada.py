@@ -197,7 +197,7 @@ def main():
                       else "z (up) [km]")
         ax.set_ylabel("shear stress change σ_xy [MPa]")
         ax.set_ylim(-4, 3)  # the edges' singular peaks cut
-        ax.set_title("1 m strike slip on a patch, %s: the Green's-function "
+        ax.set_title("1 m strike slip on a patch, %s:\nthe Green's-function "
                      "operator against Okada (1992)" % (
                          "along strike through the patch's middle depth"
                          if axis == 0 else "along depth at x = 0"),

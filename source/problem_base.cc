@@ -76,7 +76,8 @@ namespace rsfcycle
       using MG                        = solvers::MultigridCorrection<dim>;
       const unsigned int n_components = discretisation.fe.n_components();
       std::vector<typename MG::DirichletBoundary> dirichlet = {
-        {boundary_id::backstop, ComponentMask(n_components, true)}};
+        {boundary_id::backstop, ComponentMask(n_components, true)},
+        {boundary_id::backstop_opposite, ComponentMask(n_components, true)}};
       // creep: all but a free normal component
       std::vector<bool> creep(n_components, true);
       if (discretisation.normal_component() < n_components &&

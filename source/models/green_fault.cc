@@ -9,6 +9,7 @@
 #include <rsfcycle/ids.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/output/files.h>
+#include <rsfcycle/physics/split_fault.h>
 #include <rsfcycle/simulator/simulator.templates.h>
 #include <rsfcycle/time/schemes.h>
 #include <stdexcept>
@@ -51,6 +52,16 @@ namespace rsfcycle
               "; Kelvin-Voigt viscosity is not a Green's function of the "
               "slip)");
         }
+      if (scene.split_fault() && scene.gravity().norm() != 0)
+        throw std::invalid_argument(
+          refused + "with a fault-opposite side (Boundary roles) needs "
+                    "Gravity = 0 (the initial slip of a split fault under "
+                    "gravity is not implemented yet)");
+      if (scene.split_fault() && parameters.output.write_vtu)
+        throw std::invalid_argument(
+          refused + "with a fault-opposite side (Boundary roles) needs "
+                    "Output/Write VTU = false (the body's snapshot of a "
+                    "split fault is not implemented yet)");
       const double t_end = parameters.run.end_time;
       if ((scene.backstop_velocity(0.) - scene.backstop_velocity(t_end))
             .norm() != 0)
@@ -172,12 +183,14 @@ namespace rsfcycle
       {
         TimerOutput::Scope scope(timer, "Green's function operator");
         // (the gathered system is the set-up's; it goes at the scope's end)
-        const auto system = physics::gather_system(
+        auto system = physics::gather_system(
           discretisation,
           contact.contact_set(),
           physics::observation_rows(discretisation,
                                     scene,
                                     parameters.run.antiplane));
+        if (scene.split_fault())
+          physics::tie_split_fault(discretisation, system);
         fingerprint = physics::operator_fingerprint(system);
         // every rank's dofs and nodes in the state: counts and offsets of
         // the gathers
@@ -255,8 +268,12 @@ namespace rsfcycle
       // of the gravity equilibrium on a frictionless contact (zero without
       // gravity); the traction is then the shear prestress alone.
       {
-        TimerOutput::Scope  scope(timer, "Gravity equilibrium");
-        const auto          u = discretisation.gravity_equilibrium().first;
+        TimerOutput::Scope scope(timer, "Gravity equilibrium");
+        // (a split fault starts without slip: check() refuses gravity)
+        la::Vector u;
+        discretisation.reinit(u);
+        if (!scene.split_fault())
+          u = discretisation.gravity_equilibrium().first;
         std::vector<double> slip, alpha;
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {

@@ -123,8 +123,8 @@ namespace rsfcycle
       discretisation.reinit(b.a);
       // the load boundaries at V t (the load velocity is constant: check())
       discretisation.set_fixed_values(b.v, state.t);
-      for (const auto &[i, component] : discretisation.backstop_dofs)
-        b.u.local_element(i) = state.t * b.v.local_element(i);
+      for (const auto &dof : discretisation.backstop_dofs)
+        b.u.local_element(dof.index) = state.t * b.v.local_element(dof.index);
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           std::array<double, 2> rate = {{0., 0.}};

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/physics/split_fault.h>
 #include <rsfcycle/solvers/amg_correction.h>
 #include <stdexcept>
 #include <string>
@@ -86,6 +87,8 @@ namespace rsfcycle
             if (cell->is_locally_owned() && near_patch(cell))
               cell->set_refine_flag();
           triangulation.execute_coarsening_and_refinement();
+          if (scene.split_fault())
+            refine_fault_sides_alike(triangulation);
         }
       // every level: the multigrid assembles level matrices with them
       for (const auto &cell : triangulation.cell_iterators())
@@ -175,11 +178,15 @@ namespace rsfcycle
                     // creep: the tangential components as on the backstop,
                     // the normal one as on the contact
                     if (id == boundary_id::backstop ||
+                        id == boundary_id::backstop_opposite ||
                         (id == boundary_id::creep && c != normal_component()))
                       {
                         if (!fixed[i] && partitioner->in_local_range(dof) &&
                             !hanging_constraints.is_constrained(dof))
-                          backstop_dofs.emplace_back(i, c);
+                          backstop_dofs.push_back(
+                            {i,
+                             c,
+                             id == boundary_id::backstop_opposite ? -1. : 1.});
                         fixed[i] = true;
                       }
                     else if ((id == boundary_id::lateral &&
@@ -429,8 +436,8 @@ namespace rsfcycle
     Discretisation<dim>::set_fixed_values(la::Vector &v, const double t) const
     {
       const Tensor<1, dim> velocity = scene.backstop_velocity(t);
-      for (const auto &[i, component] : backstop_dofs)
-        v.local_element(i) = velocity[component];
+      for (const auto &[i, component, sign] : backstop_dofs)
+        v.local_element(i) = sign * velocity[component];
     }
 
 

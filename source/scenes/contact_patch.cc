@@ -119,7 +119,7 @@ namespace rsfcycle
             {0., lo[dim - 1] - q_hi[dim - 1], q_lo[dim - 1] - hi[dim - 1]}) :
           0.;
       return std::hypot(std::max(0., std::hypot(gx, gz) - margin),
-                        std::max(0., lo[1]));
+                        std::max({0., lo[1], -hi[1]}));
     }
 
 

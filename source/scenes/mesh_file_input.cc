@@ -53,8 +53,14 @@ namespace rsfcycle
       std::map<types::boundary_id, std::string>
       parse_roles(const std::string &text)
       {
-        const std::set<std::string> allowed = {
-          "contact", "load", "creep", "free", "free-slip", "absorbing"};
+        const std::set<std::string>               allowed = {"contact",
+                                                             "load",
+                                                             "load-opposite",
+                                                             "creep",
+                                                             "free",
+                                                             "free-slip",
+                                                             "absorbing",
+                                                             "fault-opposite"};
         std::map<types::boundary_id, std::string> roles;
         for (const auto &item : Utilities::split_string_list(text, ','))
           {
@@ -62,8 +68,9 @@ namespace rsfcycle
             if (pair.size() != 2 || allowed.count(pair[1]) == 0)
               fail("Boundary roles",
                    ": '" + item +
-                     "' is not 'tag: role' with role contact, load, creep, "
-                     "free, free-slip or absorbing");
+                     "' is not 'tag: role' with role contact, load, "
+                     "load-opposite, creep, free, free-slip, absorbing or "
+                     "fault-opposite");
             const auto tag = static_cast<types::boundary_id>(
               Utilities::string_to_int(pair[0]));
             const auto [it, inserted] = roles.emplace(tag, pair[1]);
@@ -181,11 +188,21 @@ namespace rsfcycle
           "The role of each physical boundary tag of the mesh, as 'tag: "
           "role, tag: role'. Roles: contact (rate-and-state friction on a "
           "rigid base, zero normal velocity; one plane), load (prescribed "
-          "velocity Load velocity, all components), creep (a part of the "
+          "velocity Load velocity, all components), load-opposite (the "
+          "opposite velocity, minus Load velocity: the other plate of a "
+          "fault between two parts of the body), creep (a part of the "
           "contact's plane outside the frictional contact that slides at "
           "Load velocity: its tangential displacement prescribed as on a "
           "load, its normal one held or free as Contact normal says; SEAS "
-          "BP4, BP5), free (traction free), free-slip (zero "
+          "BP4, BP5; on a split fault its slip rate is the difference of "
+          "the plates' velocities, twice Load velocity), fault-opposite (the "
+          "other side of a fault between two parts of the body: faces of "
+          "the contact's plane whose nodes duplicate those of the contact "
+          "and creep faces at the same positions, e.g. from gmsh's "
+          "Plugin(Crack); the slip is the jump of the tangential "
+          "displacement across the fault, the normal displacement is "
+          "continuous; Solver/Bulk = green-function only), free (traction "
+          "free), free-slip (zero "
           "normal velocity; in 2D parallel to the contact, in 3D "
           "perpendicular to it with one normal for all), absorbing (the "
           "truncation of an unbounded body: the dashpot traction -rho (c_p "

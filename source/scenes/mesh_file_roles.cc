@@ -187,6 +187,8 @@ namespace rsfcycle
       const std::map<std::string, types::boundary_id> id_of = {
         {"contact", boundary_id::contact},
         {"load", boundary_id::backstop},
+        {"load-opposite", boundary_id::backstop_opposite},
+        {"fault-opposite", boundary_id::fault_opposite},
         {"creep", boundary_id::creep},
         {"free", boundary_id::surface},
         {"free-slip", boundary_id::lateral},
@@ -218,12 +220,12 @@ namespace rsfcycle
                          " (free slip fixes one component of the contact's "
                          "frame)");
               }
-            if (role == "creep")
+            if (role == "creep" || role == "fault-opposite")
               for (const unsigned int v : face->vertex_indices())
                 {
                   if (std::abs(face->vertex(v)[1]) > 1e-6 * diameter)
                     fail("Boundary roles",
-                         ": a creep face (tag " +
+                         ": a " + role + " face (tag " +
                            std::to_string(face->boundary_id()) +
                            ") is not in the contact's plane (a vertex " +
                            format_number(std::abs(face->vertex(v)[1])) +
@@ -239,8 +241,15 @@ namespace rsfcycle
                 }
             face->set_boundary_id(parallel ? boundary_id::parallel :
                                              id_of.at(role));
-            holds_normal = holds_normal || parallel || role == "load";
+            holds_normal = holds_normal || parallel || role == "load" ||
+                           role == "load-opposite";
+            split = split || role == "fault-opposite";
           }
+
+      if (normal_free && split)
+        fail("Contact normal",
+             " = free: not with a fault-opposite side (the two sides of a "
+             "split fault share their normal displacement)");
 
       // a free normal with nothing else holding y: the body's rigid
       // motions along y (and its rotations about x and z, where the

@@ -73,6 +73,11 @@ namespace rsfcycle
         {
           if (green_function())
             models::GreenFault<dim>::check(parameters, *scene);
+          else if (scene->split_fault())
+            throw std::invalid_argument(
+              "Mesh file/Boundary roles: fault-opposite needs Solver/Bulk = "
+              "green-function (the volume method's fault between two "
+              "deformable sides is not implemented yet)");
           else if (scene->pore_pressure())
             throw std::invalid_argument(
               "Mesh file/Friction/Pore pressure: needs Solver/Bulk = green-function "

@@ -20,6 +20,18 @@
 #    in the checkpoint);
 #  - 3D (tests/meshes/box-fault-3d.prm: two slip components per node, the
 #    state per node): the same first event on 1 and 2 ranks (1e-6).
+#  - a fault between two deformable sides (tests/meshes/split-fault-2d.msh,
+#    plane strain, the sides tied across the ranks' parts of the mesh,
+#    physics/split_fault.h): the same first event on 1 and 2 ranks (1e-6,
+#    at the Runge-Kutta tolerance 1e-9: at the shipped 1e-5 the rounding
+#    that differs between the ranks' sums moves this plane-strain event by
+#    2e-5 through the adaptive steps).
+#  - the same on a fault dipping 60 degrees whose two sides are meshed
+#    apart with unstructured cells (tests/meshes/dipping-split-2d.msh,
+#    thrust, refined twice toward the fault: the refinement matched on both
+#    sides, physics::refine_fault_sides_alike): runs on 1 and 2 ranks (the
+#    ranks' parts of the fault differ), the same number of contact nodes,
+#    the same first event (1e-6).
 # Usage: green_function_ranks.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -159,6 +171,48 @@ PRM
 done
 same_event box-2 box-1 1e-6
 check $? "3D: first event on 2 ranks as on 1"
+
+material="density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0"
+split=("set Displacement = vector" "subsection Mesh file"
+  "  set File = $src/tests/meshes/split-fault-2d.msh"
+  "  set Boundary roles = 1: contact, 2: creep, 3: free, 4: free, 5: load, 11: fault-opposite, 12: fault-opposite, 13: free, 14: free, 15: load-opposite"
+  "  set Materials = 10: $material; 20: $material" "  set Gravity = 0, 0"
+  "  set Load velocity = 0, 5e-10"
+  "  set Observation points = fn+02: 2e3, 0; fn-02: -2e3, 0" "end"
+  "subsection Output" "  subsection SEAS" "    set Problem =" "  end" "end"
+  "subsection Time stepping" "  set Tolerance = 1e-9" "end")
+make_prm split-1 "${split[@]}"; make_prm split-2 "${split[@]}"
+"${mpi[@]}" 1 "$exe" split-1.prm > split-1.log 2>&1
+check $? "split fault on 1 rank"
+"${mpi[@]}" 2 "$exe" split-2.prm > split-2.log 2>&1
+check $? "split fault on 2 ranks"
+same_event split-2 split-1 1e-6
+check $? "split fault: first event on 2 ranks as on 1"
+
+a="if(-y / 0.8660254 < 15e3, 0.01, if(-y / 0.8660254 < 18e3, 0.01 + 0.015 * (-y / 0.8660254 - 15e3) / 3e3, 0.025))"
+dipping=("set Displacement = vector" "set Stop after events = 1"
+  "set End time = 1.5e10" "subsection Mesh file"
+  "  set File = $src/tests/meshes/dipping-split-2d.msh"
+  "  set Boundary roles = 1: contact, 2: creep, 3: free, 4: free, 5: load, 11: fault-opposite, 12: fault-opposite, 15: load-opposite"
+  "  set Materials = 10: $material; 20: $material" "  set Gravity = 0, 0"
+  "  set Load velocity = -2.5e-10, 4.330127e-10" "  set Refine where = 1"
+  "  set Observation points = fn+08: 8e3, 0; fn-08: -8e3, 0"
+  "  subsection Friction" "    set a = $a" "    set b - a = 0.015 - ($a)"
+  "    set Initial state = 8e-3 / 1e-6 * exp((($a) * ln(2e-6 / 1e-9 * sinh(50e6 * 0.025 * asinh(1e-9 / 2e-6 * exp((0.6 + 0.015 * ln(1e-6 / 1e-9)) / 0.025)) / (($a) * 50e6))) - 0.6) / 0.015)"
+  "  end" "end" "subsection Mesh" "  set Local refinements = 2" "end"
+  "subsection Output" "  subsection SEAS" "    set Problem =" "  end" "end"
+  "subsection Time stepping" "  set Tolerance = 1e-9" "end")
+make_prm dipping-1 "${dipping[@]}"; make_prm dipping-2 "${dipping[@]}"
+"${mpi[@]}" 1 "$exe" dipping-1.prm > dipping-1.log 2>&1
+check $? "dipping split fault, unstructured sides, on 1 rank"
+"${mpi[@]}" 2 "$exe" dipping-2.prm > dipping-2.log 2>&1
+check $? "dipping split fault on 2 ranks"
+nodes1=$(sed -n 's/.* \([0-9]*\) contact nodes.*/\1/p' dipping-1.log)
+nodes2=$(sed -n 's/.* \([0-9]*\) contact nodes.*/\1/p' dipping-2.log)
+[ -n "$nodes1" ] && [ "$nodes1" = "$nodes2" ]
+check $? "dipping split fault: $nodes1 and $nodes2 contact nodes on 1 and 2 ranks"
+same_event dipping-2 dipping-1 1e-6
+check $? "dipping split fault: first event on 2 ranks as on 1"
 
 echo "green-function on ranks: $n_pass passed, $n_fail failed"
 [ $n_fail -eq 0 ]

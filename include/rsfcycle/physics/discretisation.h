@@ -156,13 +156,15 @@ namespace rsfcycle
       /**
        * The component held at zero on the contact: the normal one, or
        * numbers::invalid_unsigned_int where the scene's contact normal is
-       * free (or there is no normal component).
+       * free, the fault is split (its sides are tied instead) or there is
+       * no normal component.
        */
       unsigned int
       held_contact_component() const
       {
-        return scene.contact_normal_free() ? numbers::invalid_unsigned_int :
-                                             normal_component();
+        return scene.contact_normal_free() || scene.split_fault() ?
+                 numbers::invalid_unsigned_int :
+                 normal_component();
       }
 
       /**
@@ -228,11 +230,16 @@ namespace rsfcycle
        * prescribed (Dirichlet, hanging nodes).
        */
       std::vector<bool> fixed;
-      /**
-       * Owned backstop dofs (local index) with their component
-       * (inhomogeneous Dirichlet).
-       */
-      std::vector<std::pair<unsigned int, unsigned int>> backstop_dofs;
+      /** An owned dof of a load boundary (inhomogeneous Dirichlet). */
+      struct BackstopDof
+      {
+        /** Local index. */
+        unsigned int index;
+        unsigned int component;
+        /** +1 on load and creep faces, -1 on load-opposite faces. */
+        double sign;
+      };
+      std::vector<BackstopDof> backstop_dofs;
 
     private:
       /** Whether the refinement law selects this cell in a local cycle. */

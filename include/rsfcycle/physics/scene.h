@@ -119,12 +119,15 @@ namespace rsfcycle
        * the friction. By default the shear impedance rho c_s = sqrt(G rho)
        * of the material: a body sliding on a rigid base radiates into its
        * own side only (for a fault between two equal half-spaces reduced
-       * to one side with G/2 and rho/2 this is the usual G / (2 c_s)).
+       * to one side with G/2 and rho/2 this is the usual G / (2 c_s)); a
+       * split fault (split_fault()) radiates into both sides: half the
+       * impedance, G / (2 c_s), of the contact side's material.
        */
       virtual double
       radiation_damping(const Point<dim> &, const Material &material) const
       {
-        return std::sqrt(material.shear_modulus() * material.density);
+        return std::sqrt(material.shear_modulus() * material.density) /
+               (split_fault() ? 2 : 1);
       }
 
       /**
@@ -147,6 +150,19 @@ namespace rsfcycle
        */
       virtual bool
       contact_normal_free() const
+      {
+        return false;
+      }
+
+      /**
+       * Whether the fault lies between two deformable parts of the body
+       * (faces with boundary_id::fault_opposite pair with the contact and
+       * creep faces): the slip is the jump of the tangential displacement,
+       * the normal displacement is continuous; false (the default): one
+       * body on a rigid base or mirror.
+       */
+      virtual bool
+      split_fault() const
       {
         return false;
       }

@@ -50,7 +50,8 @@ namespace rsfcycle
             unsigned int                                   n_refinements);
 
       /**
-       * The height of the box above the contact and its in-plane gap to
+       * The distance of the box from the contact's plane (above it, or
+       * below it: the other side of a split fault) and its in-plane gap to
        * the nearest patch box, reduced by `margin`, combined as for the
        * wedge; the largest double if the patch is empty.
        */

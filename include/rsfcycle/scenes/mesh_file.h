@@ -82,6 +82,11 @@ namespace rsfcycle
       {
         return normal_free;
       }
+      bool
+      split_fault() const override
+      {
+        return split;
+      }
       std::function<double(const Point<dim> &, double)>
       pore_pressure() const override;
       std::function<double(const Point<dim> &, double)>
@@ -136,6 +141,8 @@ namespace rsfcycle
       bool antiplane = false;
       /** `Contact normal = free`. */
       bool normal_free = false;
+      /** A boundary tag with the role fault-opposite. */
+      bool split = false;
       /** The load velocity in the rotated frame, parallel to the contact. */
       Tensor<1, dim>                                  load_rotated;
       double                                          ramp_time;

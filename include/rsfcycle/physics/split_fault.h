@@ -1,0 +1,57 @@
+#ifndef rsfcycle_physics_split_fault_h
+#define rsfcycle_physics_split_fault_h
+
+#include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/physics/global_system.h>
+
+namespace rsfcycle
+{
+  namespace physics
+  {
+    /**
+     * Tie the two sides of a split fault (MODEL.md §8.4) in a gathered
+     * system: every node of the contact and creep faces (the + side) pairs
+     * with the node of a fault-opposite face (the - side) at the same
+     * position, and the system is rewritten in new unknowns, u = T u~,
+     * K~ = T^T K T, f~ = T^T f, the observation rows as rows of u~. Per pair
+     * and tangential component, with a the + dof and b the - dof:
+     *   u_a = m + s/2,  u_b = m - s/2,
+     * the slip s = u_a - u_b in a's place (the contact dof, so the Schur
+     * complement of physics/green_operator.h is the fault's in the slip)
+     * and the mean m in b's. The nodal force on a (the shear prestress:
+     * the system's force without gravity) is the fault's internal
+     * traction, so it acts on b too, opposite: s takes it whole, m none. The
+     * normal dofs c (+) and d (-) become one, u_c = u_d = w in c's place; d is
+     * left fixed at zero with a unit diagonal and no coupling. Prescribed dofs:
+     * a creep (or load) dof a with a free b prescribes the slip at twice a's
+     * velocity (the two plates' difference, +v - (-v)) and leaves m free; a and
+     * b both prescribed give s and m from their two velocities; a normal
+     * prescribed on either side prescribes w. Pairs of hanging dofs are
+     * left as they are (their parents are paired).
+     *
+     * Throws std::invalid_argument naming Mesh file/Boundary roles for a
+     * node without a partner on the other side, a node hanging on one side
+     * only (the sides refined differently) and a free contact dof whose
+     * partner is prescribed.
+     */
+    /**
+     * Refine the two sides of a split fault alike: after a refinement
+     * cycle, a fault face (contact, creep or fault-opposite) whose centre is
+     * a vertex of the other side's fault faces (that side is finer there:
+     * the refinement law measures each side's own cells, and the mesh
+     * smoothing adds cells on one side) is refined, until no face is, on
+     * every rank. Meshes of the two sides that differ (unstructured ones)
+     * then still pair node for node.
+     */
+    template <int dim>
+    void
+    refine_fault_sides_alike(Triangulation<dim> &triangulation);
+
+    template <int dim>
+    void
+    tie_split_fault(const Discretisation<dim> &discretisation,
+                    GlobalSystem              &system);
+  } // namespace physics
+} // namespace rsfcycle
+
+#endif

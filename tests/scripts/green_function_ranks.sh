@@ -181,13 +181,20 @@ split=("set Displacement = vector" "subsection Mesh file"
   "  set Observation points = fn+02: 2e3, 0; fn-02: -2e3, 0" "end"
   "subsection Output" "  subsection SEAS" "    set Problem =" "  end" "end"
   "subsection Time stepping" "  set Tolerance = 1e-9" "end")
-make_prm split-1 "${split[@]}"; make_prm split-2 "${split[@]}"
-"${mpi[@]}" 1 "$exe" split-1.prm > split-1.log 2>&1
-check $? "split fault on 1 rank"
-"${mpi[@]}" 2 "$exe" split-2.prm > split-2.log 2>&1
-check $? "split fault on 2 ranks"
-same_event split-2 split-1 1e-6
-check $? "split fault: first event on 2 ranks as on 1"
+# NAME-1 and NAME-2 from the prm lines, run on 1 and 2 ranks: the same
+# first event
+on_1_and_2_ranks() { # name, label, prm lines
+  local name=$1 label=$2
+  shift 2
+  make_prm "$name-1" "$@"; make_prm "$name-2" "$@"
+  "${mpi[@]}" 1 "$exe" "$name-1.prm" > "$name-1.log" 2>&1
+  check $? "$label on 1 rank"
+  "${mpi[@]}" 2 "$exe" "$name-2.prm" > "$name-2.log" 2>&1
+  check $? "$label on 2 ranks"
+  same_event "$name-2" "$name-1" 1e-6
+  check $? "$label: first event on 2 ranks as on 1"
+}
+on_1_and_2_ranks split "split fault" "${split[@]}"
 
 a="if(-y / 0.8660254 < 15e3, 0.01, if(-y / 0.8660254 < 18e3, 0.01 + 0.015 * (-y / 0.8660254 - 15e3) / 3e3, 0.025))"
 dipping=("set Displacement = vector" "set Stop after events = 1"
@@ -202,17 +209,12 @@ dipping=("set Displacement = vector" "set Stop after events = 1"
   "  end" "end" "subsection Mesh" "  set Local refinements = 2" "end"
   "subsection Output" "  subsection SEAS" "    set Problem =" "  end" "end"
   "subsection Time stepping" "  set Tolerance = 1e-9" "end")
-make_prm dipping-1 "${dipping[@]}"; make_prm dipping-2 "${dipping[@]}"
-"${mpi[@]}" 1 "$exe" dipping-1.prm > dipping-1.log 2>&1
-check $? "dipping split fault, unstructured sides, on 1 rank"
-"${mpi[@]}" 2 "$exe" dipping-2.prm > dipping-2.log 2>&1
-check $? "dipping split fault on 2 ranks"
+on_1_and_2_ranks dipping "dipping split fault, unstructured sides" \
+  "${dipping[@]}"
 nodes1=$(sed -n 's/.* \([0-9]*\) contact nodes.*/\1/p' dipping-1.log)
 nodes2=$(sed -n 's/.* \([0-9]*\) contact nodes.*/\1/p' dipping-2.log)
 [ -n "$nodes1" ] && [ "$nodes1" = "$nodes2" ]
 check $? "dipping split fault: $nodes1 and $nodes2 contact nodes on 1 and 2 ranks"
-same_event dipping-2 dipping-1 1e-6
-check $? "dipping split fault: first event on 2 ranks as on 1"
 
 echo "green-function on ranks: $n_pass passed, $n_fail failed"
 [ $n_fail -eq 0 ]

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <limits>
 #include <map>
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
@@ -28,6 +29,49 @@ namespace rsfcycle
         bool                        hanging      = false;
       };
 
+      /** +1 on the contact and creep faces, -1 on fault-opposite, else 0. */
+      template <class FaceIterator>
+      int
+      fault_side(const FaceIterator &face)
+      {
+        if (!face->at_boundary())
+          return 0;
+        const auto id = face->boundary_id();
+        return (id == boundary_id::contact || id == boundary_id::creep) ? 1 :
+               id == boundary_id::fault_opposite                        ? -1 :
+                                                                          0;
+      }
+
+
+      /** Positions (x, y, z; z = 0 in 2D) sorted lexicographically. */
+      using Positions = std::vector<std::array<double, 3>>;
+
+      /**
+       * The index of the first position of `sorted` within `tolerance` of x
+       * in every coordinate that `accept(index)` takes; sorted.size() if
+       * none.
+       */
+      template <class Accept>
+      std::size_t
+      find_position(const Positions             &sorted,
+                    const std::array<double, 3> &x,
+                    const double                 tolerance,
+                    const Accept                &accept)
+      {
+        const std::array<double, 3> low = {
+          {x[0] - tolerance, -std::numeric_limits<double>::max(), 0.}};
+        for (auto k = std::lower_bound(sorted.begin(), sorted.end(), low) -
+                      sorted.begin();
+             k < static_cast<long>(sorted.size()) &&
+             sorted[k][0] <= x[0] + tolerance;
+             ++k)
+          if (std::abs(sorted[k][1] - x[1]) <= tolerance &&
+              std::abs(sorted[k][2] - x[2]) <= tolerance && accept(k))
+            return k;
+        return sorted.size();
+      }
+
+
       /**
        * The fault's vertices of one side (+: contact and creep faces, -:
        * fault-opposite faces) of every rank, each once.
@@ -44,12 +88,7 @@ namespace rsfcycle
           if (cell->is_locally_owned())
             for (const auto &face : cell->face_iterators())
               {
-                if (!face->at_boundary())
-                  continue;
-                const auto id = face->boundary_id();
-                if (plus != (id == boundary_id::contact ||
-                             id == boundary_id::creep) ||
-                    (!plus && id != boundary_id::fault_opposite))
+                if (fault_side(face) != (plus ? 1 : -1))
                   continue;
                 for (const unsigned int v : face->vertex_indices())
                   {
@@ -89,20 +128,6 @@ namespace rsfcycle
       }
 
 
-      /** +1 on the contact and creep faces, -1 on fault-opposite, else 0. */
-      template <class FaceIterator>
-      int
-      fault_side(const FaceIterator &face)
-      {
-        if (!face->at_boundary())
-          return 0;
-        const auto id = face->boundary_id();
-        return (id == boundary_id::contact || id == boundary_id::creep) ? 1 :
-               id == boundary_id::fault_opposite                        ? -1 :
-                                                                          0;
-      }
-
-
       std::string
       position(const FaultVertex &vertex, const int dim)
       {
@@ -129,8 +154,11 @@ namespace rsfcycle
           extent = std::max(extent, std::abs(vertex.x[d]));
       const double tolerance = 1e-9 * std::max(extent, 1.);
       std::sort(minus.begin(), minus.end(), [](const auto &a, const auto &b) {
-        return a.x[0] < b.x[0];
+        return a.x < b.x;
       });
+      Positions minus_positions;
+      for (const auto &vertex : minus)
+        minus_positions.push_back(vertex.x);
       std::vector<bool> taken(minus.size(), false);
 
       // per dof: its part in the pairs and its partner
@@ -148,20 +176,12 @@ namespace rsfcycle
       const unsigned int normal_component = discretisation.normal_component();
       for (const auto &p : plus)
         {
-          auto k = std::lower_bound(minus.begin(),
-                                    minus.end(),
-                                    p.x[0] - tolerance,
-                                    [](const auto &vertex, const double x) {
-                                      return vertex.x[0] < x;
-                                    }) -
-                   minus.begin();
-          while (k < static_cast<long>(minus.size()) &&
-                 (taken[k] || std::abs(minus[k].x[1] - p.x[1]) > tolerance ||
-                  std::abs(minus[k].x[2] - p.x[2]) > tolerance) &&
-                 minus[k].x[0] <= p.x[0] + tolerance)
-            ++k;
-          if (k == static_cast<long>(minus.size()) ||
-              minus[k].x[0] > p.x[0] + tolerance)
+          const std::size_t k =
+            find_position(minus_positions,
+                          p.x,
+                          tolerance,
+                          [&taken](const std::size_t i) { return !taken[i]; });
+          if (k == minus.size())
             throw std::invalid_argument(
               refused + "the fault node at " + position(p, dim) +
               " (rotated frame) has no node of a fault-opposite face at "
@@ -329,8 +349,8 @@ namespace rsfcycle
                         entry[1 + d] = face->vertex(v)[d];
                       local.push_back(entry);
                     }
-          std::array<std::vector<std::array<double, 3>>, 2> vertices;
-          double                                            extent = 1;
+          std::array<Positions, 2> vertices;
+          double                   extent = 1;
           for (const auto &entry : la::all_gather(comm, local))
             {
               vertices[entry[0] > 0 ? 0 : 1].push_back(
@@ -341,22 +361,15 @@ namespace rsfcycle
           const double tolerance = 1e-9 * extent;
           for (auto &list : vertices)
             std::sort(list.begin(), list.end());
-          const auto is_vertex =
-            [&](const std::vector<std::array<double, 3>> &list,
-                const Point<dim>                         &x) {
-              std::array<double, 3> low = {{x[0] - tolerance, -1e300, -1e300}};
-              for (auto it = std::lower_bound(list.begin(), list.end(), low);
-                   it != list.end() && (*it)[0] <= x[0] + tolerance;
-                   ++it)
-                {
-                  double distance = 0;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    distance = std::max(distance, std::abs((*it)[d] - x[d]));
-                  if (distance <= tolerance)
-                    return true;
-                }
-              return false;
-            };
+          const auto is_vertex = [&](const Positions  &list,
+                                     const Point<dim> &centre) {
+            std::array<double, 3> x = {{0., 0., 0.}};
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = centre[d];
+            return find_position(list, x, tolerance, [](std::size_t) {
+                     return true;
+                   }) < list.size();
+          };
           // a face whose centre is a vertex of the other side: refine it
           bool flagged = false;
           for (const auto &cell : triangulation.active_cell_iterators())

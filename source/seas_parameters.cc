@@ -124,6 +124,16 @@ namespace rsfcycle
       "(interpolated in log10 V between steps; a node counts again once "
       "the fastest node of the fault is below it)");
     prm.declare_entry(
+      "Thrust slip",
+      "as computed",
+      Patterns::Selection("as computed|reversed"),
+      "2D: the sign of the slip, the slip rate and the shear stress in the "
+      "fault station files and profiles. as computed: the contact's "
+      "tangential axis (the rotated frame's x, down dip without gravity). "
+      "reversed: the opposite; SEAS BP3 counts thrust slip positive, which "
+      "on a contact on the hanging wall is slip up dip, against the "
+      "frame's x (prm/seas-bp3-qd.prm)");
+    prm.declare_entry(
       "Mirror model",
       "false",
       Patterns::Bool(),
@@ -154,6 +164,7 @@ namespace rsfcycle
     event_profile_interval = prm.get_double("Event slip profile interval");
     shear_modulus          = prm.get_double("Shear modulus");
     mirror                 = prm.get_bool("Mirror model");
+    slip_sign              = prm.get("Thrust slip") == "reversed" ? -1. : 1.;
     plane_stations.clear();
     for (const auto &item :
          dealii::Utilities::split_string_list(prm.get("Plane stations"), ';'))

@@ -36,7 +36,10 @@
 // roles free and load-opposite: a separate body that the contact does not
 // see) with G/2, rho/2 and a free contact normal against the two-sided
 // one; the same checks of the first step (the uplift 2 km from the fault)
-// and of the first event (its start within 1e-6).
+// and of the first event (its start within 1e-6; not its nucleation node:
+// the box is symmetric in x, and rounding picks one of the two
+// mirror-image nodes, which moved when the normal coupling's rounding
+// entered).
 // Printed: the event in years to 0.001, log10 of the peak to 0.01, the
 // displacement in mm to 0.1 (rounding moves the last digits of each).
 #include "run_model.h"
@@ -122,7 +125,8 @@ namespace
   compare_first_event(const Result                    &one,
                       const Result                    &two,
                       const std::vector<unsigned int> &columns,
-                      const unsigned int               minus)
+                      const unsigned int               minus,
+                      const bool                       nucleation = true)
   {
     // time-series.csv: the 7 fixed columns, then the observations
     const auto &a = one.series.front(), &b = two.series.front();
@@ -148,9 +152,10 @@ namespace
                     << ", two-sided " << fixed(e2[1] / year, 3)
                     << "; within 1e-6: "
                     << yes(std::abs(e2[1] / e1[1] - 1) < 1e-6) << std::endl;
-    dealii::deallog << "nucleation [km]: one-sided " << e1[4] / 1e3
-                    << ", two-sided " << e2[4] / 1e3
-                    << "; the same: " << yes(e1[4] == e2[4]) << std::endl;
+    if (nucleation)
+      dealii::deallog << "nucleation [km]: one-sided " << e1[4] / 1e3
+                      << ", two-sided " << e2[4] / 1e3
+                      << "; the same: " << yes(e1[4] == e2[4]) << std::endl;
     dealii::deallog << "peak log10 V [m/s]: one-sided "
                     << fixed(std::log10(e1[5]), 2) << ", two-sided "
                     << fixed(std::log10(e2[5]), 2) << "; within 0.5 %: "
@@ -260,7 +265,9 @@ namespace
       "output-two-sided-3d",
       "/meshes/box-fault-3d.prm");
     dealii::deallog << "3D" << std::endl;
-    compare_first_event(one, two, {7}, 8);
+    // (the box is symmetric in x: rounding picks one of two mirror-image
+    // nucleation nodes, so the node is not compared)
+    compare_first_event(one, two, {7}, 8, false);
   }
 } // namespace
 

@@ -68,4 +68,13 @@ read_seas(const std::string &file)
   return rows;
 }
 
+/** x with `digits` digits after the point (a rounded digest value). */
+inline std::string
+to_fixed(const double x, const int digits)
+{
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << x;
+  return out.str();
+}
+
 #endif

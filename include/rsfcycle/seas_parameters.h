@@ -22,6 +22,8 @@ namespace rsfcycle
     double                event_profile_interval = 1;         // [s]
     double                shear_modulus          = 0;         // [Pa]
     bool                  mirror                 = false;
+    /** +1, or -1 with Thrust slip = reversed (2D station files). */
+    double slip_sign = 1;
     /** 3D: the stations (x2 along strike, x3 depth) [m]. */
     std::vector<std::array<double, 2>> plane_stations;
     /**

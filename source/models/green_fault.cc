@@ -364,6 +364,24 @@ namespace rsfcycle
 
 
     template <int dim>
+    const std::vector<double> &
+    GreenFault<dim>::normal_forces(const double *s, const double t) const
+    {
+      normal_work.resize(damping.size());
+      if (op.normal_coupling)
+        {
+          normal_change.resize(op.n_rows());
+          op.apply_normal(s, t, normal_change.data());
+        }
+      for (unsigned int k = 0; k < damping.size(); ++k)
+        normal_work[k] =
+          normal_force(k, t) +
+          (op.normal_coupling ? normal_change[dof_start[k]] : 0.);
+      return normal_work;
+    }
+
+
+    template <int dim>
     void
     GreenFault<dim>::slip_rates(const double *s,
                                 const double *alpha,
@@ -374,6 +392,7 @@ namespace rsfcycle
       const unsigned int first = op.first_row;
       const auto        &law   = *parameters.solver.law;
       op.apply(s, force_work.begin());
+      const auto  &N = normal_forces(s, t);
       const double g = perturbation_factor(t);
       for (unsigned int k = 0; k < damping.size(); ++k)
         {
@@ -390,14 +409,13 @@ namespace rsfcycle
           double speed;
           if (n_dofs == 1)
             {
-              V[first + i0] =
-                slip_rate(k, F[0], alpha[node], normal_force(k, t));
-              speed = std::abs(V[first + i0]);
+              V[first + i0] = slip_rate(k, F[0], alpha[node], N[k]);
+              speed         = std::abs(V[first + i0]);
             }
           else
             {
               const double length = std::hypot(F[0], F[1]);
-              speed = slip_rate(k, length, alpha[node], normal_force(k, t));
+              speed               = slip_rate(k, length, alpha[node], N[k]);
               for (unsigned int d = 0; d < 2; ++d)
                 V[first + i0 + d] = length > 0 ? speed * F[d] / length : 0.;
             }

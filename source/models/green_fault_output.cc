@@ -15,7 +15,9 @@ namespace rsfcycle
     output::Layout
     GreenFault<dim>::layout() const
     {
-      return contact_layout(scene, contact);
+      auto layout          = contact_layout(scene, contact);
+      layout.normal_stress = op.normal_coupling;
+      return layout;
     }
 
 
@@ -31,7 +33,11 @@ namespace rsfcycle
       const auto         &nodes = contact.nodes();
       const unsigned int  n_own = nodes.size();
       output::Sample      sample;
-      std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own);
+      std::vector<double> rates(n_own), stresses(n_own), log10_states(n_own),
+        normal_stresses(n_own);
+      // (the effective normal force, with the pore pressure and the split
+      // fault's normal coupling)
+      const auto         &normal = normal_forces(state.slip.data(), state.t);
       std::vector<double> pressures(pore_pressure ? n_own : 0),
         darcy(darcy_velocity ? n_own : 0);
       std::vector<std::array<double, 2>> slip(n_own), rate_components(n_own);
@@ -48,15 +54,11 @@ namespace rsfcycle
             }
           rates[k]           = std::hypot(V[0], V[1]);
           rate_components[k] = V;
-          // (the pressure evaluated once: the effective normal stress here
-          // is normal_force(k, t) / w)
-          double sigma = nodes[k].normal_force / nodes[k].weight;
           if (pore_pressure)
-            {
-              pressures[k] = pore_pressure(nodes[k].position, state.t);
-              sigma -= pressures[k];
-            }
-          stresses[k] = sigma * law.friction_coefficient(p, alpha, rates[k]);
+            pressures[k] = pore_pressure(nodes[k].position, state.t);
+          normal_stresses[k] = normal[k] / nodes[k].weight;
+          stresses[k] =
+            normal_stresses[k] * law.friction_coefficient(p, alpha, rates[k]);
           log10_states[k] = p.log_theta(alpha) / std::log(10.);
           if (darcy_velocity)
             darcy[k] = darcy_velocity(nodes[k].position, state.t);
@@ -69,6 +71,7 @@ namespace rsfcycle
       sample.slip                 = contact.gather(slip);
       sample.slip_rate_components = contact.gather(rate_components);
       sample.shear_stresses       = contact.gather(stresses);
+      sample.normal_stresses      = contact.gather(normal_stresses);
       sample.log10_states         = contact.gather(log10_states);
       for (unsigned int p = 0; p < op.O.m(); ++p)
         {
@@ -189,6 +192,10 @@ namespace rsfcycle
         log << " (" << op.n_rows() << " rows on rank 0 of " << ranks << ")";
       log << ", " << format_number(operator_megabytes)
           << " MB on the rank that holds most";
+      if (op.normal_coupling)
+        log << ", the slip's normal stress change " << op.N.m() << " x "
+            << op.N.n() << " dense ("
+            << format_number(std::round(8e-6 * op.N.m() * op.N.n())) << " MB)";
       log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())
         log << "from a Cholesky factor of " << op.n_interior << " unknowns and "

@@ -1,5 +1,6 @@
 // The implicit step of the Green's-function method: the spatial problem on
 // the fault's nodes only (models/green_fault.h, solvers/fault_solver.h).
+#include <algorithm>
 #include <cmath>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/time/rate_state_coupling.h>
@@ -61,8 +62,36 @@ namespace rsfcycle
       problem.first            = first;
       problem.communicator     = communicator;
 
-      std::vector<double>     w     = guess ? guess->rate : old.rate;
-      std::vector<double>     alpha = guess ? guess->alpha : old.alpha;
+      std::vector<double> w     = guess ? guess->rate : old.rate;
+      std::vector<double> alpha = guess ? guess->alpha : old.alpha;
+
+      // A split fault's normal coupling: the normal forces at the slip of
+      // the step's end for the rates w, updated with the state in the
+      // fixed point (the spatial problem for fixed normal forces stays
+      // convex); a node without compression fails the step.
+      const auto e        = scheme->new_velocity();
+      const auto h        = scheme->new_displacement();
+      const auto new_slip = [&](const std::vector<double> &rates,
+                                std::vector<double>       &slip) {
+        slip.resize(n);
+        for (unsigned int j = 0; j < n; ++j)
+          slip[j] =
+            old.slip[j] + tau * (h[0] * old.rate[j] +
+                                 h[1] * (e[0] * rates[j] + e[1] * old.rate[j]));
+      };
+      std::vector<double> slip_end;
+      const auto update_normal_forces = [&](const std::vector<double> &rates) {
+        new_slip(rates, slip_end);
+        const auto &N = normal_forces(slip_end.data(), t_step);
+        for (unsigned int k = 0; k < n_own; ++k)
+          potentials[k].normal_force = N[k];
+        const bool positive =
+          std::all_of(N.begin(), N.end(), [](double x) { return x > 0; });
+        return Utilities::MPI::min(positive ? 1 : 0, communicator) == 1;
+      };
+      bool compressed_end = true;
+      if (op.normal_coupling)
+        compressed_end = update_normal_forces(w);
       const double            sigma = scheme->friction_state_weight();
       solvers::StepStatistics statistics;
       const auto              iterations = time::couple_rate_and_state(
@@ -74,6 +103,8 @@ namespace rsfcycle
         w,
         alpha,
         [&](const std::vector<double> &a, std::vector<double> &v) {
+          if (!compressed_end)
+            return false;
           for (unsigned int k = 0; k < n_own; ++k)
             potentials[k].set_state((1 - sigma) * old.alpha[first + k] +
                                     sigma * a[first + k]);
@@ -97,6 +128,8 @@ namespace rsfcycle
                                       tau);
             }
           gather_in_place(a.data(), true);
+          if (op.normal_coupling)
+            compressed_end = update_normal_forces(v_new);
         },
         [this](const std::vector<double> &a1, const std::vector<double> &a2) {
           return state_distance(a1, a2);
@@ -104,9 +137,7 @@ namespace rsfcycle
       if (!iterations)
         return {};
 
-      const auto e = scheme->new_velocity();
-      const auto h = scheme->new_displacement();
-      State      next;
+      State next;
       next.t                                 = t + tau;
       next.statistics                        = statistics;
       next.statistics.fixed_point_iterations = *iterations;
@@ -114,12 +145,11 @@ namespace rsfcycle
       next.rate.resize(n);
       next.slip.resize(n);
       bool finite = true;
+      new_slip(w, next.slip);
       for (unsigned int j = 0; j < n; ++j)
         {
           next.rate[j] = e[0] * w[j] + e[1] * old.rate[j];
-          next.slip[j] =
-            old.slip[j] + tau * (h[0] * old.rate[j] + h[1] * next.rate[j]);
-          finite = finite && std::isfinite(next.slip[j]) &&
+          finite       = finite && std::isfinite(next.slip[j]) &&
                    std::isfinite(next.alpha[j]) && std::isfinite(next.rate[j]);
         }
       if (!finite)

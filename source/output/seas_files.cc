@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <iomanip>
@@ -18,14 +19,17 @@ namespace rsfcycle
       : SeasFileSet(parameters)
       , pore_pressure(layout.pore_pressure)
       , darcy_velocity(layout.darcy_velocity)
+      , normal_stress(layout.normal_stress)
+      , components(layout.observation_components)
     {
       if (!layout.lateral_positions.empty())
         throw std::invalid_argument(
           "Output/SEAS/Problem: output::SeasFiles writes 2D models only");
-      if (layout.observation_components != 1)
+      if (components > 2 || (components == 2 && parameters.mirror))
         throw std::invalid_argument(
           "Mesh file/Observation components = all: the SEAS surface "
-          "stations of 2D models take one component (up)");
+          "stations of 2D models take the vertical component or both in "
+          "plane strain, and one with Output/SEAS/Mirror model");
       const auto        &s = layout.positions;
       const unsigned int n = s.size();
       order.resize(n);
@@ -62,7 +66,13 @@ namespace rsfcycle
                                    "Slip profile"));
         }
       add_file(dir, "global.dat");
+      first_profile = stations.size() + surface_names.size() + 1;
       add_file(dir, "slip.dat");
+      if (normal_stress)
+        {
+          add_file(dir, "shear_stress.dat");
+          add_file(dir, "normal_stress.dat");
+        }
     }
 
 
@@ -121,6 +131,9 @@ namespace rsfcycle
             {"slip", "Slip (m)"},
             {"slip_rate", "Slip rate (log10 m/s)"},
             {"shear_stress", "Shear stress (MPa)"}};
+          if (normal_stress)
+            columns.emplace_back("normal_stress",
+                                 "Normal stress (MPa, compression positive)");
           if (pore_pressure)
             columns.emplace_back("pore_pressure", "Pore pressure (MPa)");
           if (darcy_velocity)
@@ -131,26 +144,45 @@ namespace rsfcycle
       for (const auto &name : surface_names)
         write_header(f++,
                      "off fault, observation point " + name,
-                     {{"t", "Time (s)"},
-                      {"disp", "Displacement (m)"},
-                      {"vel", "Velocity (m/s)"}});
+                     components == 1 ?
+                       std::vector<std::pair<std::string, std::string>>{
+                         {"t", "Time (s)"},
+                         {"disp", "Displacement (m)"},
+                         {"vel", "Velocity (m/s)"}} :
+                       std::vector<std::pair<std::string, std::string>>{
+                         {"t", "Time (s)"},
+                         {"disp_1", "Horizontal displacement (m, +x)"},
+                         {"disp_2", "Vertical displacement (m, down)"},
+                         {"vel_1", "Horizontal velocity (m/s, +x)"},
+                         {"vel_2", "Vertical velocity (m/s, down)"}});
       write_header(f++,
                    "global",
                    {{"t", "Time (s)"},
                     {"max_slip_rate", "Max slip rate (log10 m/s)"},
                     {"moment_rate", "Moment rate (N/s per m along strike)"}});
-      write_header(f,
-                   "on fault, slip profiles",
-                   {{"t", "Time (s)"},
-                    {"max_slip_rate", "Max slip rate (log10 m/s)"},
-                    {"slip", "Slip (m), one column per position of row 1"}},
-                   "Here is the data.",
-                   "# Row #1 = 0 0, then the positions along the contact "
-                   "(m)\n");
-      row << 0. << 0.;
-      for (const double x : profile_positions)
-        row << x;
-      row.write_line(*streams[f]);
+      const std::array<std::array<std::string, 3>, 3> profiles = {
+        {{{"slip profiles", "slip", "Slip (m)"}},
+         {{"shear stress profiles", "shear_stress", "Shear stress (MPa)"}},
+         {{"normal stress profiles",
+           "normal_stress",
+           "Normal stress (MPa, compression positive)"}}}};
+      for (unsigned int i = 0; i < (normal_stress ? 3 : 1); ++i, ++f)
+        {
+          write_header(f,
+                       "on fault, " + profiles[i][0],
+                       {{"t", "Time (s)"},
+                        {"max_slip_rate", "Max slip rate (log10 m/s)"},
+                        {profiles[i][1],
+                         profiles[i][2] +
+                           ", one column per position of row 1"}},
+                       "Here is the data.",
+                       "# Row #1 = 0 0, then the positions along the "
+                       "contact (m)\n");
+          row << 0. << 0.;
+          for (const double x : profile_positions)
+            row << x;
+          row.write_line(*streams[f]);
+        }
     }
 
 
@@ -162,6 +194,7 @@ namespace rsfcycle
       rate.resize(n);
       log10_rate.resize(n);
       stress.resize(n);
+      normal.resize(normal_stress ? n : 0);
       log10_state.resize(n);
       pressure.resize(pore_pressure ? n : 0);
       darcy.resize(darcy_velocity ? n : 0);
@@ -170,11 +203,19 @@ namespace rsfcycle
         {
           const unsigned int k = order[i];
           const double       V = sample.slip_rates[k];
-          slip[i]              = sample.slip[k][0];
-          rate[i]              = V;
-          log10_rate[i]        = std::log10(std::max(V, 1e-300));
-          stress[i]            = sample.shear_stresses[k] / 1e6;
-          log10_state[i]       = sample.log10_states[k];
+          // (the friction stress has the direction of the slip rate)
+          const double sign =
+            parameters.slip_sign * (!sample.slip_rate_components.empty() &&
+                                        sample.slip_rate_components[k][0] < 0 ?
+                                      -1. :
+                                      1.);
+          slip[i]       = parameters.slip_sign * sample.slip[k][0];
+          rate[i]       = V;
+          log10_rate[i] = std::log10(std::max(V, 1e-300));
+          stress[i]     = sign * sample.shear_stresses[k] / 1e6;
+          if (normal_stress)
+            normal[i] = sample.normal_stresses[k] / 1e6;
+          log10_state[i] = sample.log10_states[k];
           if (pore_pressure)
             pressure[i] = sample.pore_pressures[k] / 1e6;
           if (darcy_velocity)
@@ -205,6 +246,8 @@ namespace rsfcycle
           row.precise(t) << interpolate(where, slip.data())
                          << interpolate(where, log10_rate.data())
                          << interpolate(where, stress.data());
+          if (normal_stress)
+            row << interpolate(where, normal.data());
           if (pore_pressure)
             row << interpolate(where, pressure.data());
           if (darcy_velocity)
@@ -215,8 +258,12 @@ namespace rsfcycle
       const double factor = parameters.mirror ? 0.5 : 1.;
       for (unsigned int i = 0; i < surface_names.size(); ++i)
         {
-          row.precise(t) << factor * sample.observations[i]
-                         << factor * sample.observation_rates[i];
+          // (two components: x, and the vertical one positive down)
+          row.precise(t);
+          for (const auto *values :
+               {&sample.observations, &sample.observation_rates})
+            for (unsigned int c = 0; c < components; ++c)
+              row << (c == 1 ? -1. : factor) * (*values)[components * i + c];
           row.write_line(*streams[f++]);
         }
       // G int V ds by the nodes' lumped weights
@@ -233,10 +280,17 @@ namespace rsfcycle
     void
     SeasFiles::write_profile(const double t, const Sample &sample)
     {
-      row.precise(t) << sort_sample(sample);
-      for (const auto &where : profile)
-        row << interpolate(where, slip.data());
-      row.write_line(*streams.back());
+      const double log10_max_rate = sort_sample(sample);
+      for (unsigned int i = 0; i < (normal_stress ? 3 : 1); ++i)
+        {
+          const double *values = i == 0 ? slip.data() :
+                                 i == 1 ? stress.data() :
+                                          normal.data();
+          row.precise(t) << log10_max_rate;
+          for (const auto &where : profile)
+            row << interpolate(where, values);
+          row.write_line(*streams[first_profile + i]);
+        }
       check();
     }
 

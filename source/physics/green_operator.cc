@@ -23,6 +23,13 @@ namespace rsfcycle
       const unsigned int       n     = K.n();
       const unsigned int       n_c   = K.contact_dofs.size();
       const unsigned int       n_o   = K.observations.size();
+      // the observation rows, then the normal rows (as many as contact
+      // dofs, or none): computed alike
+      const unsigned int n_rows = n_o + K.normal_rows.size();
+      const auto         row_of =
+        [&K, n_o](const unsigned int p) -> const ObservationRow & {
+        return p < n_o ? K.observations[p] : K.normal_rows[p - n_o];
+      };
       const unsigned int rank  = Utilities::MPI::this_mpi_process(communicator);
       const unsigned int first = K.rank_offsets[rank];
       const unsigned int n_own = K.rank_offsets[rank + 1] - first;
@@ -99,23 +106,36 @@ namespace rsfcycle
                   op.g1[r] -= K.values[e] * Z(i, 1);
                 }
           }
-        op.o0.reinit(n_o);
-        op.o1.reinit(n_o);
-        for (unsigned int p = 0; p < n_o; ++p)
-          for (const auto &[j, w] : K.observations[p])
+        dealii::Vector<double> o0(n_rows), o1(n_rows);
+        for (unsigned int p = 0; p < n_rows; ++p)
+          for (const auto &[j, w] : row_of(p))
             if (const int i = interior_index[j]; i >= 0)
               {
-                op.o0[p] += w * Z(i, 0);
-                op.o1[p] += w * Z(i, 1);
+                o0[p] += w * Z(i, 0);
+                o1[p] += w * Z(i, 1);
               }
             else if (fixed[j])
-              op.o1[p] += w * v_b[j];
+              o1[p] += w * v_b[j];
+        op.o0.reinit(n_o);
+        op.o1.reinit(n_o);
+        op.n0.reinit(K.normal_rows.empty() ? 0 : n_own);
+        op.n1.reinit(op.n0.size());
+        for (unsigned int p = 0; p < n_o; ++p)
+          {
+            op.o0[p] = o0[p];
+            op.o1[p] = o1[p];
+          }
+        for (unsigned int r = 0; r < op.n0.size(); ++r)
+          {
+            op.n0[r] = o0[n_o + first + r];
+            op.n1[r] = o1[n_o + first + r];
+          }
       }
 
       // This rank's rows of S (S symmetric: the columns of its nodes) and
       // its columns of O, block_size at a time: X = K_II^-1 K_Ic
       op.S.reinit(n_own, n_c);
-      dealii::FullMatrix<double> O(n_o, n_c);
+      dealii::FullMatrix<double> O(n_rows, n_c);
       for (unsigned int b0 = first; b0 < first + n_own; b0 += block_size)
         {
           const unsigned int nb = std::min(block_size, first + n_own - b0);
@@ -145,8 +165,8 @@ namespace rsfcycle
                     op.S(q - first, r) += K.values[e];
                 }
             }
-          for (unsigned int p = 0; p < n_o; ++p)
-            for (const auto &[j, w] : K.observations[p])
+          for (unsigned int p = 0; p < n_rows; ++p)
+            for (const auto &[j, w] : row_of(p))
               if (const int i = interior_index[j]; i >= 0)
                 for (unsigned int jj = 0; jj < nb; ++jj)
                   O(p, b0 + jj) -= w * X(i, jj);
@@ -155,9 +175,17 @@ namespace rsfcycle
                        q < static_cast<int>(b0 + nb))
                 O(p, q) += w;
         }
-      // every rank filled its nodes' columns of O
+      // every rank filled its nodes' columns of O (and N)
+      dealii::FullMatrix<double> sum(n_rows, n_c);
+      Utilities::MPI::sum(O, communicator, sum);
       op.O.reinit(n_o, n_c);
-      Utilities::MPI::sum(O, communicator, op.O);
+      op.O.fill(sum, 0, 0, 0, 0);
+      op.normal_coupling = !K.normal_rows.empty();
+      if (op.normal_coupling)
+        {
+          op.N.reinit(n_own, n_c);
+          op.N.fill(sum, 0, 0, n_o + first, 0);
+        }
       return op;
     }
 
@@ -176,6 +204,24 @@ namespace rsfcycle
           for (unsigned int j = 0; j < n; ++j)
             sum += row[j] * slip[j];
           force[r] = sum;
+        }
+    }
+
+
+    void
+    GreenOperator::apply_normal(const double *slip,
+                                const double  t,
+                                double       *force) const
+    {
+      const unsigned int n = N.n();
+      for (unsigned int r = 0; r < N.m(); ++r)
+        {
+          const double *row = &N(r, 0);
+          double        sum = 0;
+#pragma omp simd reduction(+ : sum)
+          for (unsigned int j = 0; j < n; ++j)
+            sum += row[j] * slip[j];
+          force[r] = n0[r] + t * n1[r] + sum;
         }
     }
 
@@ -250,15 +296,16 @@ namespace rsfcycle
         add(static_cast<std::uint32_t>(dof));
       for (const unsigned int offset : K.rank_offsets)
         add(static_cast<std::uint32_t>(offset));
-      for (const auto &row : K.observations)
-        {
-          add(static_cast<std::uint64_t>(row.size()));
-          for (const auto &[j, w] : row)
-            {
-              add(static_cast<std::uint64_t>(j));
-              add(w);
-            }
-        }
+      for (const auto *list : {&K.observations, &K.normal_rows})
+        for (const auto &row : *list)
+          {
+            add(static_cast<std::uint64_t>(row.size()));
+            for (const auto &[j, w] : row)
+              {
+                add(static_cast<std::uint64_t>(j));
+                add(w);
+              }
+          }
       return crc.checksum();
     }
 

@@ -23,7 +23,8 @@ namespace rsfcycle
       constexpr std::size_t n_dofs_at      = 16; // uint64
       constexpr std::size_t n_contact_at   = 24; // uint64
       constexpr std::size_t n_obs_at       = 32; // uint64
-      constexpr std::size_t n_ranks_at     = 40; // uint32 (44: zero)
+      constexpr std::size_t n_ranks_at     = 40; // uint32
+      constexpr std::size_t normal_at      = 44; // uint32: 1 with N rows
       constexpr std::size_t payload_crc_at = 48; // uint32, of the payload
       constexpr std::size_t header_crc_at  = 52; // uint32, of [0, 52)
 
@@ -108,19 +109,30 @@ namespace rsfcycle
           if (!out)
             error = tmp + ": cannot be written";
         }
-      for (unsigned int r = 0; r < size; ++r)
-        {
-          if (r == rank && error.empty() && op.n_rows() > 0)
-            {
-              std::ofstream out(tmp, std::ios::binary | std::ios::app);
-              out.write(reinterpret_cast<const char *>(&op.S(0, 0)),
-                        8 * op.S.m() * op.S.n());
-              out.close();
-              if (!out)
-                error = tmp + ": cannot be written";
-            }
-          MPI_Barrier(comm);
-        }
+      // (the rows of S, then those of the normal coupling: n0, n1, N)
+      for (unsigned int part = 0; part < (op.normal_coupling ? 2 : 1); ++part)
+        for (unsigned int r = 0; r < size; ++r)
+          {
+            if (r == rank && error.empty() && op.n_rows() > 0)
+              {
+                std::ofstream out(tmp, std::ios::binary | std::ios::app);
+                if (part == 0)
+                  out.write(reinterpret_cast<const char *>(&op.S(0, 0)),
+                            8 * op.S.m() * op.S.n());
+                else
+                  for (unsigned int i = 0; i < op.n_rows(); ++i)
+                    {
+                      const double n01[2] = {op.n0[i], op.n1[i]};
+                      out.write(reinterpret_cast<const char *>(n01), 16);
+                      out.write(reinterpret_cast<const char *>(&op.N(i, 0)),
+                                8 * n_c);
+                    }
+                out.close();
+                if (!out)
+                  error = tmp + ": cannot be written";
+              }
+            MPI_Barrier(comm);
+          }
       error = first_error(comm, error);
 
       // the first rank: the payload's checksum, the header, the rename
@@ -141,6 +153,9 @@ namespace rsfcycle
           put(header, n_contact_at, n_c);
           put(header, n_obs_at, n_o);
           put(header, n_ranks_at, static_cast<std::uint32_t>(size));
+          put(header,
+              normal_at,
+              static_cast<std::uint32_t>(op.normal_coupling ? 1 : 0));
           put(header, payload_crc_at, crc.checksum());
           put(header, header_crc_at, crc32(header.data(), header_crc_at));
           io.seekp(0);
@@ -189,10 +204,12 @@ namespace rsfcycle
         throw refuse("format " + std::to_string(format) +
                      ", this program reads format " +
                      std::to_string(green_operator_format));
-      const auto n_c = get<std::uint64_t>(header, n_contact_at);
-      const auto n_o = get<std::uint64_t>(header, n_obs_at);
+      const auto n_c    = get<std::uint64_t>(header, n_contact_at);
+      const auto n_o    = get<std::uint64_t>(header, n_obs_at);
+      const bool normal = get<std::uint32_t>(header, normal_at) != 0;
       const auto expected =
-        header_size + 8 * (small_doubles(n_c, n_o) + n_c * n_c);
+        header_size + 8 * (small_doubles(n_c, n_o) + n_c * n_c +
+                           (normal ? n_c * (n_c + 2) : 0));
       if (file_size != expected)
         throw refuse("truncated (" + std::to_string(file_size) +
                      " bytes, the header promises " + std::to_string(expected) +
@@ -212,6 +229,27 @@ namespace rsfcycle
           crc.process_bytes(row.data(), 8 * n_c);
           if (fits && r >= first_row && r < first_row + n_rows)
             std::copy(row.begin(), row.end(), &op.S(r - first_row, 0));
+        }
+      op.normal_coupling = normal;
+      if (normal)
+        {
+          op.N.reinit(fits ? n_rows : 0, n_c);
+          op.n0.reinit(fits ? n_rows : 0);
+          op.n1.reinit(op.n0.size());
+          row.resize(n_c + 2);
+          for (std::uint64_t r = 0; r < n_c && in; ++r)
+            {
+              in.read(reinterpret_cast<char *>(row.data()), 8 * (n_c + 2));
+              crc.process_bytes(row.data(), 8 * (n_c + 2));
+              if (fits && r >= first_row && r < first_row + n_rows)
+                {
+                  op.n0[r - first_row] = row[0];
+                  op.n1[r - first_row] = row[1];
+                  std::copy(row.begin() + 2,
+                            row.end(),
+                            &op.N(r - first_row, 0));
+                }
+            }
         }
       if (!in || crc.checksum() != get<std::uint32_t>(header, payload_crc_at))
         throw refuse("checksum mismatch in the operator: the file is damaged");

@@ -20,13 +20,18 @@ namespace rsfcycle
     {
       const std::string refused = "Mesh file/Boundary roles: ";
 
-      /** A vertex of the fault: position, dofs per component, hanging. */
+      /**
+       * A vertex of the fault: position, dofs per component, hanging, and
+       * the sign of its side's outward normal along the normal component
+       * (y of the rotated frame, where the fault lies).
+       */
       struct FaultVertex
       {
         std::array<double, 3>       x = {{0., 0., 0.}};
         std::array<unsigned int, 3> dofs;
         unsigned int                n_components = 0;
         bool                        hanging      = false;
+        double                      outward      = 0;
       };
 
       /** +1 on the contact and creep faces, -1 on fault-opposite, else 0. */
@@ -80,8 +85,9 @@ namespace rsfcycle
       std::vector<FaultVertex>
       fault_vertices(const Discretisation<dim> &discretisation, const bool plus)
       {
-        // (side, hanging, x, y, z, dof 0, 1, 2) as doubles for the gather
-        std::vector<std::array<double, 8>> local;
+        // (n_components, hanging, x, y, z, dof 0, 1, 2, outward) as
+        // doubles for the gather
+        std::vector<std::array<double, 9>> local;
         const unsigned int n_components = discretisation.fe.n_components();
         for (const auto &cell :
              discretisation.dof_handler.active_cell_iterators())
@@ -90,10 +96,12 @@ namespace rsfcycle
               {
                 if (fault_side(face) != (plus ? 1 : -1))
                   continue;
+                const double outward =
+                  face->center()[1] > cell->center()[1] ? 1. : -1.;
                 for (const unsigned int v : face->vertex_indices())
                   {
-                    std::array<double, 8> entry = {
-                      {0., 0., 0., 0., 0., -1., -1., -1.}};
+                    std::array<double, 9> entry = {
+                      {0., 0., 0., 0., 0., -1., -1., -1., outward}};
                     entry[0] = n_components;
                     for (unsigned int d = 0; d < dim; ++d)
                       entry[2 + d] = face->vertex(v)[d];
@@ -115,6 +123,7 @@ namespace rsfcycle
             FaultVertex vertex;
             vertex.n_components = static_cast<unsigned int>(entry[0]);
             vertex.hanging      = entry[1] != 0;
+            vertex.outward      = entry[8];
             for (unsigned int d = 0; d < 3; ++d)
               vertex.x[d] = entry[2 + d];
             for (unsigned int c = 0; c < vertex.n_components; ++c)
@@ -174,6 +183,8 @@ namespace rsfcycle
       std::vector<Kind>         kind(n, none);
       std::vector<unsigned int> partner(n, 0);
       const unsigned int normal_component = discretisation.normal_component();
+      // per + tangential dof: its node's + normal dof and outward normal
+      std::map<unsigned int, std::pair<unsigned int, double>> normal_of;
       for (const auto &p : plus)
         {
           const std::size_t k =
@@ -202,6 +213,8 @@ namespace rsfcycle
               kind[b]    = c == normal_component ? gone : mean;
               partner[a] = b;
               partner[b] = a;
+              if (c != normal_component && normal_component < p.n_components)
+                normal_of[a] = {p.dofs[normal_component], p.outward};
             }
         }
       for (unsigned int k = 0; k < minus.size(); ++k)
@@ -319,6 +332,22 @@ namespace rsfcycle
               tied.emplace_back(l, w * t_jl);
           observation = std::move(tied);
         }
+
+      // the normal force on each contact dof's node (+ side): the other
+      // side's push against the outward normal n, -n (K u)_c of the
+      // untied stiffness's row c (the + side's cells alone), in u~
+      system.normal_rows.clear();
+      if (!normal_of.empty())
+        for (const unsigned int a : system.contact_dofs)
+          {
+            const auto [c, outward] = normal_of.at(a);
+            ObservationRow normal_row;
+            for (std::size_t e = system.row_begin(c); e < system.row_end(c);
+                 ++e)
+              for (const auto &[l, t_jl] : forward(system.columns[e]))
+                normal_row.emplace_back(l, -outward * system.values[e] * t_jl);
+            system.normal_rows.push_back(std::move(normal_row));
+          }
 
       system.row_start      = std::move(row_start);
       system.columns        = std::move(columns);

@@ -158,6 +158,16 @@ namespace rsfcycle
       double
       normal_force(unsigned int k, double t) const;
 
+      /**
+       * The normal force of every node of this rank at the slip s (of all
+       * dofs) and time t: normal_force(k, t) plus, with a split fault's
+       * normal coupling, the slip's change n0 + t n1 + N s
+       * (physics::GreenOperator; BP3's Delta sigma_n times w_k). A
+       * reference to a buffer that the next call overwrites.
+       */
+      const std::vector<double> &
+      normal_forces(const double *s, double t) const;
+
       /** @name The time::Model interface */
       /** @{ */
       State
@@ -341,6 +351,8 @@ namespace rsfcycle
       mutable std::unique_ptr<physics::StaticSolver<dim>> static_solver;
       State                                               initial;
       mutable Vector                                      force_work;
+      /** normal_forces()'s buffers: per own node, per own dof. */
+      mutable std::vector<double> normal_work, normal_change;
       /** The implicit step's scheme and fault solver. */
       std::unique_ptr<const time::TimeScheme> scheme;
       solvers::FaultSolver                    fault_solver;

@@ -32,6 +32,12 @@ namespace rsfcycle
       std::vector<std::array<double, 2>> slip_rate_components;
       /** The friction stress |sigma_n| mu(V, alpha) + C of every node [Pa]. */
       std::vector<double> shear_stresses;
+      /**
+       * The effective normal stress (compression positive) of every node
+       * [Pa], with the shear stresses; it changes with slip on a split
+       * fault (the Green's-function method's normal coupling).
+       */
+      std::vector<double> normal_stresses;
       /** log10 of the state theta = L / V* exp(alpha) of every node [s]. */
       std::vector<double> log10_states;
       /** The time derivatives of the observations (body models). */
@@ -74,6 +80,11 @@ namespace rsfcycle
       std::array<std::array<double, 3>, 2> slip_axes{};
       double                               convergence_rate        = 1;
       bool                                 interpolate_event_times = false;
+      /**
+       * Whether the normal stress changes with slip (a split fault's
+       * normal coupling): the SEAS files then record it.
+       */
+      bool normal_stress = false;
       /** Whether samples carry pore pressures and Darcy velocities. */
       bool pore_pressure = false, darcy_velocity = false;
     };

@@ -62,7 +62,7 @@ namespace rsfcycle
       void
       write_step(double t, const Sample &sample);
 
-      /** One row of slip.dat. */
+      /** One row of slip.dat (and shear_stress.dat, normal_stress.dat). */
       void
       write_profile(double t, const Sample &sample);
 
@@ -93,8 +93,18 @@ namespace rsfcycle
       std::vector<double>        profile_positions;
       std::vector<std::string>   surface_names;
       /** The station columns pore_pressure and darcy_vel (SEAS BP6). */
-      const bool          pore_pressure, darcy_velocity;
-      std::vector<double> slip, rate, log10_rate, stress, log10_state; // sorted
+      const bool pore_pressure, darcy_velocity;
+      /**
+       * The station column normal_stress and the profiles
+       * shear_stress.dat and normal_stress.dat (SEAS BP3).
+       */
+      const bool normal_stress;
+      /** Per surface station: 1 (up) or 2 (x, and down: SEAS BP3). */
+      const unsigned int components;
+      /** The first profile file's index in the set (slip.dat). */
+      unsigned int        first_profile = 0;
+      std::vector<double> slip, rate, log10_rate, stress, normal,
+        log10_state;                       // sorted
       std::vector<double> pressure, darcy; // sorted, [MPa], [m/s]
     };
   } // namespace output

@@ -49,6 +49,14 @@ namespace rsfcycle
       std::vector<unsigned int> rank_offsets;
       /** The observation rows (every point once). */
       std::vector<ObservationRow> observations;
+      /**
+       * With a split fault (physics/split_fault.h) in plane strain or 3D:
+       * per contact dof (in the order of contact_dofs), the compressive
+       * normal force on its node as a row of the unknowns, the force with
+       * which the fault's - side pushes on the + side against the + side's
+       * outward normal [N/m^(3-dim)]; empty otherwise.
+       */
+      std::vector<ObservationRow> normal_rows;
 
       unsigned int
       n() const

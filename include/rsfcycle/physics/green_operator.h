@@ -49,10 +49,20 @@ namespace rsfcycle
       dealii::FullMatrix<double> O;  // n_obs x n_c [-]
       dealii::Vector<double>     o0; // [m]
       dealii::Vector<double>     o1; // [m/s]
-      unsigned int               first_row  = 0;
-      unsigned int               n_nodes    = 0; // n_c, all ranks
-      unsigned int               n_interior = 0;
-      unsigned int               n_blocks   = 0; // multi-RHS solves
+      /**
+       * A split fault's normal coupling (GlobalSystem::normal_rows), this
+       * rank's rows: the compressive normal force of each contact dof's
+       * node, n0 + t n1 + N s (BP3's slip-induced normal stress change
+       * times the node's weight), as the observations'; empty without.
+       */
+      dealii::FullMatrix<double> N;  // n_rows x n_c [N/m^(dim-1) per m]
+      dealii::Vector<double>     n0; // n_rows [N/m^(3-dim)]
+      dealii::Vector<double>     n1; // n_rows [N/m^(3-dim) per s]
+      bool                       normal_coupling = false;
+      unsigned int               first_row       = 0;
+      unsigned int               n_nodes         = 0; // n_c, all ranks
+      unsigned int               n_interior      = 0;
+      unsigned int               n_blocks        = 0; // multi-RHS solves
       /** The rows of S as an H-matrix, once compress() has run. */
       std::shared_ptr<const solvers::HierarchicalMatrix> compressed;
 
@@ -76,6 +86,13 @@ namespace rsfcycle
        */
       void
       apply(const double *slip, double *force) const;
+
+      /**
+       * With the normal coupling: force = n0 + t n1 + N slip for this
+       * rank's rows (dense products).
+       */
+      void
+      apply_normal(const double *slip, double t, double *force) const;
 
       /**
        * Compress this rank's rows of S as an H-matrix of relative tolerance
@@ -121,14 +138,16 @@ namespace rsfcycle
      * The format of the operator file. Increase it whenever its layout
      * changes: a file of another format is refused, never misread.
      */
-    constexpr std::uint32_t green_operator_format = 2;
+    constexpr std::uint32_t green_operator_format = 3;
 
     /**
      * Write `file` (green-operator.bin in a run folder), collectively: a
      * header (magic "rsfgreen", format, fingerprint, the sizes n_dofs, n_c,
      * n_o, the number of ranks, CRC32 of the payload and of the header)
      * and the payload (g0, g1, O, o0, o1, then the rows of S, as doubles,
-     * the nodes rank by rank), each rank writing its rows in turn. Written
+     * the nodes rank by rank), each rank writing its rows in turn; with the
+     * normal coupling (a flag in the header) then, rank by rank, the rows
+     * of n0, n1 and N, each as (n0, n1, row of N). Written
      * to file.tmp and renamed: the file is either complete or absent. A
      * failed write is a std::runtime_error naming the file on every rank.
      */

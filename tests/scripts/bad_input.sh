@@ -188,6 +188,16 @@ if [ $? -ne 0 ] && [ "$(wc -l < missing.err)" -eq 1 ] && grep -q "no-such-file.p
 then n_pass=$((n_pass + 1)); else n_fail=$((n_fail + 1)); echo "FAILED missing file"; fi
 echo "missing-file: $(cat missing.err)"
 
+# SEAS BP3's files: the slip's sign and the surface stations' components
+check_bp3() { # name, expected word, prm body (appended after the include)
+  local name=$1 word=$2 body=$3
+  printf 'include %s/prm/seas-bp3-qd.prm\nset Output directory = run-%s\n%b\n' \
+    "$src" "$name" "$body" > "$name.prm"
+  check_file "$name" "$word"
+}
+check_bp3 seas-thrust-slip "Thrust slip" 'subsection Output\nsubsection SEAS\nset Thrust slip = sideways\nend\nend'
+check_bp3 seas-two-components-mirror "Observation components = all" 'subsection Mesh\nset Local refinements = 0\nend\nsubsection Output\nsubsection SEAS\nset Mirror model = true\nend\nend'
+
 # unwritable output folder (a path below a regular file)
 touch a-file
 printf 'include %s/prm/wedge-2d.prm\nset End time = 1\nset Output directory = a-file/run\n' "$src" > unwritable.prm

@@ -258,9 +258,14 @@ namespace rsfcycle
               communicator);
           }
         // what the run keeps of S on the rank that keeps most
+        // (and of N, with a split fault's normal coupling)
+        const auto stored = [&](const auto &compressed) {
+          return compressed ? double(compressed->stored_entries()) :
+                              double(op.n_rows()) * op.n_contact();
+        };
         operator_megabytes = Utilities::MPI::max(
-          8e-6 * (op.compressed ? double(op.compressed->stored_entries()) :
-                                  double(op.n_rows()) * op.n_contact()),
+          8e-6 * (stored(op.compressed) +
+                  (op.normal_coupling ? stored(op.compressed_normal) : 0.)),
           communicator);
       }
 

@@ -193,9 +193,14 @@ namespace rsfcycle
       log << ", " << format_number(operator_megabytes)
           << " MB on the rank that holds most";
       if (op.normal_coupling)
-        log << ", the slip's normal stress change " << op.N.m() << " x "
-            << op.N.n() << " dense ("
-            << format_number(std::round(8e-6 * op.N.m() * op.N.n())) << " MB)";
+        log << ", the slip's normal stress change " << op.n_rows() << " x "
+            << op.n_contact()
+            << (op.compressed_normal ? " as an H-matrix (" : " dense (")
+            << format_number(8e-6 *
+                             (op.compressed_normal ?
+                                double(op.compressed_normal->stored_entries()) :
+                                double(op.n_rows()) * op.n_contact()))
+            << " MB)";
       log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())
         log << "from a Cholesky factor of " << op.n_interior << " unknowns and "

@@ -213,16 +213,23 @@ namespace rsfcycle
                                 const double  t,
                                 double       *force) const
     {
-      const unsigned int n = N.n();
-      for (unsigned int r = 0; r < N.m(); ++r)
+      if (compressed_normal)
+        compressed_normal->vmult(slip, force);
+      else
         {
-          const double *row = &N(r, 0);
-          double        sum = 0;
+          const unsigned int n = N.n();
+          for (unsigned int r = 0; r < N.m(); ++r)
+            {
+              const double *row = &N(r, 0);
+              double        sum = 0;
 #pragma omp simd reduction(+ : sum)
-          for (unsigned int j = 0; j < n; ++j)
-            sum += row[j] * slip[j];
-          force[r] = n0[r] + t * n1[r] + sum;
+              for (unsigned int j = 0; j < n; ++j)
+                sum += row[j] * slip[j];
+              force[r] = sum;
+            }
         }
+      for (unsigned int r = 0; r < n0.size(); ++r)
+        force[r] += n0[r] + t * n1[r];
     }
 
 
@@ -234,34 +241,40 @@ namespace rsfcycle
       const unsigned int        m = S.m(), n = S.n();
       const std::vector<double> rows(points.begin() + dim * first_row,
                                      points.begin() + dim * (first_row + m));
+      // (S symmetric: on one rank its rows are all rows, and half is kept)
       compressed = std::make_shared<const solvers::HierarchicalMatrix>(
-        S, rows, points, dim, tolerance);
+        S, rows, points, dim, tolerance, rows == points);
+      if (normal_coupling)
+        compressed_normal = std::make_shared<const solvers::HierarchicalMatrix>(
+          N, rows, points, dim, tolerance, false);
       std::vector<double> x(n), dense(m), h(m);
       double              error = 0;
-      for (unsigned int test = 0; test < 2; ++test)
-        {
-          // a uniform slip; a reproducible pseudo-random one in [-1, 1]
-          std::uint32_t seed = 12345;
-          for (auto &xi : x)
-            {
-              seed = 1664525u * seed + 1013904223u;
-              xi   = test == 0 ? 1. : seed / 2147483648. - 1.;
-            }
-          for (unsigned int r = 0; r < m; ++r)
-            {
-              dense[r] = 0;
-              for (unsigned int j = 0; j < n; ++j)
-                dense[r] += S(r, j) * x[j];
-            }
-          compressed->vmult(x.data(), h.data());
-          double diff = 0, norm = 0;
-          for (unsigned int r = 0; r < m; ++r)
-            {
-              diff += (h[r] - dense[r]) * (h[r] - dense[r]);
-              norm += dense[r] * dense[r];
-            }
-          error = std::max(error, std::sqrt(diff / norm));
-        }
+      for (const auto &[A, H] : {std::make_pair(&S, compressed.get()),
+                                 std::make_pair(&N, compressed_normal.get())})
+        for (unsigned int test = 0; H && test < 2; ++test)
+          {
+            // a uniform slip; a reproducible pseudo-random one in [-1, 1]
+            std::uint32_t seed = 12345;
+            for (auto &xi : x)
+              {
+                seed = 1664525u * seed + 1013904223u;
+                xi   = test == 0 ? 1. : seed / 2147483648. - 1.;
+              }
+            for (unsigned int r = 0; r < m; ++r)
+              {
+                dense[r] = 0;
+                for (unsigned int j = 0; j < n; ++j)
+                  dense[r] += (*A)(r, j) * x[j];
+              }
+            H->vmult(x.data(), h.data());
+            double diff = 0, norm = 0;
+            for (unsigned int r = 0; r < m; ++r)
+              {
+                diff += (h[r] - dense[r]) * (h[r] - dense[r]);
+                norm += dense[r] * dense[r];
+              }
+            error = std::max(error, std::sqrt(diff / norm));
+          }
       return error;
     }
 
@@ -272,6 +285,8 @@ namespace rsfcycle
       if (!compressed)
         throw std::logic_error("release_dense() before compress()");
       S = dealii::FullMatrix<double>();
+      if (compressed_normal)
+        N = dealii::FullMatrix<double>();
     }
 
 

@@ -1,4 +1,5 @@
-// A symmetric matrix compressed by hmat-oss (solvers/hierarchical_matrix.h).
+// A matrix of point interactions compressed by hmat-oss
+// (solvers/hierarchical_matrix.h).
 #include <hmat/hmat.h>
 #include <rsfcycle/solvers/hierarchical_matrix.h>
 #include <stdexcept>
@@ -87,6 +88,7 @@ namespace rsfcycle
       const std::vector<double>        &column_points,
       const unsigned int                dim,
       const double                      tolerance,
+      const bool                        symmetric,
       const unsigned int                leaf_size,
       const double                      eta)
       : data(std::make_unique<Data>())
@@ -99,7 +101,10 @@ namespace rsfcycle
           column_points.size() != dim * A.n())
         throw std::invalid_argument(
           "HierarchicalMatrix: one point per row and per column");
-      const bool symmetric = row_points == column_points;
+      if (symmetric && row_points != column_points)
+        throw std::invalid_argument(
+          "HierarchicalMatrix: a symmetric matrix has the same points for "
+          "its rows and columns");
 
       data->rows = cluster_tree(row_points, dim, leaf_size);
       data->columns =

@@ -11,7 +11,7 @@
 #   DTMAX      max time step in s (default 3153600 = 0.1 yr of 365 d; interseismic sampling)
 #   TMAX       end time in years of 365 d (default 1500)
 #   NICE       nice level (default 10)
-# Writes OUTDIR/{fltst_dpXXX.dat,global.dat,events.txt,timing.txt} and keeps HBI's native
+# Writes OUTDIR/{fltst_dpXXX.dat,global.dat,events.txt,srfst_x[+-]8.dat,timing.txt} and keeps HBI's native
 # output in OUTDIR/native/. HBI runs on one MPI rank (mpirun -np 1), OMP_NUM_THREADS=1.
 set -euo pipefail
 
@@ -40,11 +40,13 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS
 ( cd "$N" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.in > log.txt 2>&1 ) || true
 grep -q "Time exceeds tmax" "$N/log.txt" || { echo "WARNING: HBI did not reach tmax" >&2; tail -3 "$N/log.txt" >&2; }
 nice -n "$NICE" $PY "$HERE/hbi2seas_bp3.py" "$N" "$OUT" --commit "$HBI_COMMIT"
+# surface displacement at x = +-8 km (post-processed from HBI slip frames; HBI does not compute it)
+nice -n "$NICE" $PY "$HERE/hbi_surface_bp3.py" "$N" "$OUT"
 {
   echo "code=HBI $HBI_COMMIT + $(basename "$PATCH")"
   echo "case=BP3-QD dip 60 thrust, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
-  echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: one core busy with another computation)"
+  echo "host=$(hostname) nproc=$(nproc --all) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: one core busy with another computation)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"
 } > "$OUT/timing.txt"
 cat "$OUT/timing.txt"

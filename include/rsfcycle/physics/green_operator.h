@@ -63,8 +63,9 @@ namespace rsfcycle
       unsigned int               n_nodes         = 0; // n_c, all ranks
       unsigned int               n_interior      = 0;
       unsigned int               n_blocks        = 0; // multi-RHS solves
-      /** The rows of S as an H-matrix, once compress() has run. */
-      std::shared_ptr<const solvers::HierarchicalMatrix> compressed;
+      /** The rows of S (and of N) as H-matrices, once compress() has run. */
+      std::shared_ptr<const solvers::HierarchicalMatrix> compressed,
+        compressed_normal;
 
       unsigned int
       n_contact() const
@@ -89,7 +90,7 @@ namespace rsfcycle
 
       /**
        * With the normal coupling: force = n0 + t n1 + N slip for this
-       * rank's rows (dense products).
+       * rank's rows (the H-matrix's product if N is compressed).
        */
       void
       apply_normal(const double *slip, double t, double *force) const;
@@ -100,14 +101,15 @@ namespace rsfcycle
        * (points[dim k], ...) for all n_c nodes, and return the largest
        * relative error (2-norm) of the compressed product against the
        * dense one for two test slips (uniform, and pseudo-random), over
-       * this rank's rows. S stays until release_dense().
+       * this rank's rows; N too (not symmetric), the error the larger of
+       * the two. S and N stay until release_dense().
        */
       double
       compress(const std::vector<double> &points,
                unsigned int               dim,
                double                     tolerance);
 
-      /** Free the dense S once it is compressed and written. */
+      /** Free the dense S and N once they are compressed and written. */
       void
       release_dense();
     };

@@ -29,8 +29,8 @@ namespace rsfcycle
       /**
        * Compress the m x n matrix A whose row i belongs to the point
        * (row_points[dim i], ..., row_points[dim i + dim - 1]) and column j to
-       * the point of column_points; if the two lists are equal, A must be
-       * symmetric and only its lower triangle is stored. The entries are
+       * the point of column_points; a `symmetric` A (the two lists equal)
+       * has only its lower triangle stored. The entries are
        * read through A(i, j); A is not kept. Throws std::runtime_error if
        * hmat-oss fails.
        */
@@ -39,6 +39,7 @@ namespace rsfcycle
                          const std::vector<double>        &column_points,
                          unsigned int                      dim,
                          double                            tolerance,
+                         bool                              symmetric,
                          unsigned int                      leaf_size = 32,
                          double                            eta       = 2.);
       ~HierarchicalMatrix();

@@ -9,9 +9,11 @@ fltst_dpXXX.dat, srfst_x+08.dat, srfst_x-08.dat). Events of both are found
 the same way: an event starts at the first row with max slip rate >= 1e-3
 m/s and ends at the first row below it (re-crossings within 60 s belong to
 the event). Per event: start (years of 365 days), peak slip rate, slip at
-0 and 10 km down dip at the end, and the jump of the surface displacement
-at x = +8 km and -8 km (horizontal +x, vertical up) over the event, with
-rsfcycle's relative differences from HBI. Events are paired in order, as
+0 and 10 km down dip at the end, the jump of the surface displacement
+at x = +8 km and -8 km (horizontal +x, vertical up) over the event, and
+the normal stress at 0 and 10 km before and after it, with rsfcycle's
+relative differences from HBI (HBI's 0 km station is its surface cell's
+centre, half a cell down dip; rsfcycle's the surface node). Events are paired in order, as
 far as both runs go (--until: only events that start before).
 """
 import sys
@@ -91,7 +93,8 @@ def main():
     print(f"events: rsfcycle {len(e1)}, HBI {len(e2)}; compared {n}")
     print("  #  start [yr] rsf / HBI (%)   interval [yr] rsf / HBI (%)   "
           "peak V [m/s] rsf / HBI (%)   slip 0 km [m] (%)   slip 10 km [m] (%)")
-    worst = {"start": 0, "interval": 0, "peak": 0, "slip0": 0, "jump": 0}
+    worst = {"start": 0, "interval": 0, "peak": 0, "slip0": 0, "jump": 0,
+             "normal": 0}
     for i in range(n):
         (a1, b1, p1), (a2, b2, p2) = e1[i], e2[i]
         line = (f"{i + 1:3d}  {a1 / YEAR:8.2f} / {a2 / YEAR:8.2f} "
@@ -128,8 +131,18 @@ def main():
                     jumps[-1] += f" ({rel(j1, j2):+.2f} %)"
                     worst["jump"] = max(worst["jump"], abs(rel(j1, j2)))
         print("       surface jumps rsf / HBI: " + "; ".join(jumps))
-    print("largest differences [%]: " +
-          ", ".join(f"{k} {v:.2f}" for k, v in worst.items()))
+        normal = []
+        for d in ("000", "100"):
+            n1 = [value_at(s1[d], t, 4) for t in (a1 - 1, b1)]
+            n2 = [value_at(s2[d], t, 4) for t in (a2 - 1, b2)]
+            normal.append(f"{int(d) / 10:g} km {n1[0]:.2f} -> {n1[1]:.2f} / "
+                          f"{n2[0]:.2f} -> {n2[1]:.2f}")
+            worst["normal"] = max(worst["normal"],
+                                  abs(n1[1] - n1[0] - (n2[1] - n2[0])))
+        print("       normal stress [MPa] before -> after, rsf / HBI: " +
+              "; ".join(normal))
+    print("largest differences [%; normal: of the change over an event, "
+          "MPa]: " + ", ".join(f"{k} {v:.2f}" for k, v in worst.items()))
 
 
 if __name__ == "__main__":

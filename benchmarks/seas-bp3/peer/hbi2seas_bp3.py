@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Convert native HBI output for BP3-QD (see bp3_input.py, hbi-bp3.patch) to SEAS-like files.
+"""Convert native HBI output for BP3-QD (see bp3_input.py, ../../seas-bp5/peer/hbi-bp5.patch) to SEAS-like files.
 
 usage: hbi2seas_bp3.py NATIVE_DIR OUT_DIR --commit SHA
 
@@ -24,7 +24,7 @@ VTH = 1e-3
 def header(f, commit, meta, extra):
     f.write("# This is the file header:\n")
     f.write("# problem=SEAS Benchmark BP3-QD (dip 60 deg, thrust)\n")
-    f.write("# code=HBI (github.com/sozawa94/hbi) commit %s + rsfcycle patch hbi-bp3.patch "
+    f.write("# code=HBI (github.com/sozawa94/hbi) commit %s + rsfcycle patch hbi-bp5.patch "
             "(problem 2dph: half-space edge-dislocation kernels for shear and normal traction)\n" % commit)
     f.write("# modeler=rsfcycle peer run (independent public code)\n")
     f.write("# date=%s\n" % datetime.date.today().isoformat())

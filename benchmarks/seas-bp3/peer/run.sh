@@ -5,7 +5,7 @@
 # usage: PEER_SRC=/work/peers/hbi-bp3 benchmarks/seas-bp3/peer/run.sh OUTDIR
 #   PEER_SRC   HBI checkout to use/create (default /work/peers/hbi-bp3). If absent it is cloned
 #              from HBI_GIT (default: the local mirror, else GitHub), checked out at the pinned
-#              commit (../../hbi-peer.sh) and patched with hbi-bp3.patch.
+#              commit (../../hbi-peer.sh) and patched with ../../seas-bp5/peer/hbi-bp5.patch.
 #   CELL       element size in m (default 25; must divide 2500)
 #   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
 #   DTMAX      max time step in s (default 3153600 = 0.1 yr of 365 d; interseismic sampling)
@@ -16,7 +16,8 @@
 set -euo pipefail
 
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-PATCH=$HERE/hbi-bp3.patch
+# the BP5 peer patch (no physics: an out-of-bounds fix, 64 stations, full-precision output)
+PATCH=$HERE/../../seas-bp5/peer/hbi-bp5.patch
 PY=/usr/bin/python3
 PEER_SRC=${PEER_SRC:-/work/peers/hbi-bp3}
 CELL=${CELL:-25}

@@ -1,7 +1,13 @@
 #!/usr/bin/python3
-"""Write HBI's input for SEAS BP3-QD (60 deg thrust, half-space, normal-stress coupling).
+"""Write HBI's input for SEAS BP3-QD (60 deg thrust or normal, half-space, normal-stress coupling).
 
-usage: bp3_input.py NATIVE_DIR --cell METRES --eps E --dtmax S --tmax YR [--dip DEG]
+usage: bp3_input.py NATIVE_DIR --cell METRES --eps E --dtmax S --tmax YR [--dip DEG] [--sense thrust|normal]
+
+--sense normal (BP3's normal-faulting variant): V_p = -1e-9 m/s, V_init = -1e-9 m/s and the
+prestress -tau0 (tau0 from |V_init|, same formula), i.e. every signed quantity of the thrust
+input flips; the state psi (theta0) is unchanged. HBI's slip, V and tau are signed in the
+thrust-positive sense (V = 2 V0 exp(-psi/a) sinh(tau/(sigma a)), aging law with |V|, stress
+rate K (V - V_p)), so no source change is needed.
 
 Writes NATIVE_DIR/bp3.in (HBI problem '2dph': planar fault of NCELL = 40 km / cell
 elements from the free surface, dip DEG, half-space edge-dislocation kernel for shear
@@ -51,7 +57,9 @@ def main():
     ap.add_argument("--tmax", default="1500")
     ap.add_argument("--dip", type=float, default=60.0)
     ap.add_argument("--dtout_co", default="1.0")
+    ap.add_argument("--sense", choices=["thrust", "normal"], default="thrust")
     a = ap.parse_args()
+    sg = 1.0 if a.sense == "thrust" else -1.0  # sign of V_p, V_init and the prestress
     n = int(round(P['Wf'] / a.cell))
     assert abs(n * a.cell - P['Wf']) < 1e-6
     tau0, eta = tau0_mpa()
@@ -69,20 +77,21 @@ def main():
          "filenumber 0", "nstep 100000000", "interval 100000000",
          "tmax %s" % a.tmax, "dtout 1.0", "dtout_co %s" % a.dtout_co,
          "eps_r %s" % a.eps, "dtmax %s" % a.dtmax, "velth 1e-3",
-         "backslip T", "vpl %g" % P['Vp'],       # stress rate K (V - Vp): exact for creep at Vp below W_f
+         "backslip T", "vpl %g" % (sg * P['Vp']),       # stress rate K (V - Vp): exact for creep at Vp below W_f
          "parameterfromfile T", "parameter_file bp3_param.dat", "parameter_file_ncol 1",
          "b %g" % P['b'], "dc %g" % P['L'], "f0 %g" % P['f0'], "vref %g" % P['V0'], "a %g" % P['amax'],
          "evlaw aging",
          # HBI's tau is the frictional strength tau0 + dtau - eta V: start it at tau0 - eta Vinit
-         "tauinit %.17g" % (tau0 - eta * P['Vinit']), "sigmainit %g" % P['sigma'],
-         "velinit %g" % P['Vinit']]
+         # (normal faulting: tau_el0 = -tau0 and V = -Vinit, so tauinit = -(tau0 - eta Vinit))
+         "tauinit %.17g" % (sg * (tau0 - eta * P['Vinit'])), "sigmainit %g" % P['sigma'],
+         "velinit %g" % (sg * P['Vinit'])]
     L += ["outloc %d" % c for c in cells]
     with open(os.path.join(a.native, "bp3.in"), "w") as f:
         f.write("\n".join(L) + "\n")
     with open(os.path.join(a.native, "stations.json"), "w") as f:
-        json.dump(dict(cell=a.cell, ncell=n, tau0=tau0, eta=eta, stations=st), f, indent=1)
-    print("bp3.in: %d cells of %g m, tau0 = %.15g MPa (HBI tauinit = tau0 - eta Vinit), %d station cells"
-          % (n, a.cell, tau0, len(cells)))
+        json.dump(dict(cell=a.cell, ncell=n, tau0=sg * tau0, eta=eta, sense=a.sense, stations=st), f, indent=1)
+    print("bp3.in (%s): %d cells of %g m, tau0 = %.15g MPa (HBI tauinit = tau0 - eta Vinit), %d station cells"
+          % (a.sense, n, a.cell, sg * tau0, len(cells)))
 
 
 if __name__ == "__main__":

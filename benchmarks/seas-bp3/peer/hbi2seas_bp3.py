@@ -8,7 +8,9 @@ Native files used (filenumber 0):
   output/monitor0.dat       every step: k t log10(Vmax) meanslip meanmu max_sigma min_sigma err dt nrjct wall sum(V ds)
 Writes:
   fltst_dpXXX.dat  (XXX = down-dip distance in 100 m): t slip slip_rate shear_stress normal_stress
-                   slip (m, thrust positive), slip_rate = log10 V (m/s), stresses in MPa,
+                   slip (m, thrust positive), slip_rate = log10 |V| (m/s), stresses in MPa,
+                   shear stress thrust positive (normal-faulting run, SENSE=normal: slip and
+                   shear stress come out negative, as BP3 asks; HBI's variables are already signed so),
                    normal stress = 50 MPa + dsigma_n, compression positive.
   global.dat       t max_slip_rate(log10) min/max normal stress on the fault
   events.txt       catalogue: event start (max V first > 1e-3 m/s), end (max V < 1e-3), peak max V,
@@ -23,7 +25,7 @@ VTH = 1e-3
 
 def header(f, commit, meta, extra):
     f.write("# This is the file header:\n")
-    f.write("# problem=SEAS Benchmark BP3-QD (dip 60 deg, thrust)\n")
+    f.write("# problem=SEAS Benchmark BP3-QD (dip 60 deg, %s)\n" % meta['sense'])
     f.write("# code=HBI (github.com/sozawa94/hbi) commit %s + rsfcycle patch hbi-bp5.patch "
             "(problem 2dph: half-space edge-dislocation kernels for shear and normal traction)\n" % commit)
     f.write("# modeler=rsfcycle peer run (independent public code)\n")
@@ -51,7 +53,8 @@ def main():
     a = ap.parse_args()
     js = json.load(open(os.path.join(a.native, "stations.json")))
     inp = read_inp(os.path.join(a.native, "bp3.in"))
-    meta = dict(cell=js['cell'], ncell=js['ncell'], eps=inp['eps_r'][0], dtmax=inp['dtmax'][0])
+    meta = dict(cell=js['cell'], ncell=js['ncell'], eps=inp['eps_r'][0], dtmax=inp['dtmax'][0],
+                sense=js.get('sense', 'thrust'))
     tau_init = float(inp['tauinit'][0]); sig_init = float(inp['sigmainit'][0]); v_init = float(inp['velinit'][0])
     os.makedirs(a.out, exist_ok=True)
 
@@ -78,7 +81,7 @@ def main():
         tau = np.mean([d[:, 4] for d in ds], axis=0)
         sig = np.mean([d[:, 5] for d in ds], axis=0)
         t = np.concatenate([[0.0], t]); slip = np.concatenate([[0.0], slip])
-        lv = np.concatenate([[np.log10(v_init)], np.log10(V)])
+        lv = np.concatenate([[np.log10(abs(v_init))], np.log10(V)])
         tau = np.concatenate([[tau_init], tau]); sig = np.concatenate([[sig_init], sig])
         st[float(s)] = dict(k=np.concatenate([[0], k]), t=t, slip=slip, lv=lv, tau=tau, sig=sig)
         where = ("cell 1 (centre %g m down dip)" % (js['cell'] / 2) if len(cells) == 1 else
@@ -88,9 +91,9 @@ def main():
         with open(os.path.join(a.out, name), "w") as f:
             header(f, a.commit, meta, [
                 "location= on fault, %g km down dip: %s" % (float(s), where),
-                "Column #1 = Time (s)", "Column #2 = Slip (m, thrust positive)",
-                "Column #3 = Slip rate (log10 m/s)",
-                "Column #4 = Shear stress (MPa) [HBI's tau = tau0 + dtau_qs - eta V]",
+                "Column #1 = Time (s)", "Column #2 = Slip (m, thrust positive: negative for normal faulting)",
+                "Column #3 = Slip rate (log10 |V|, m/s)",
+                "Column #4 = Shear stress (MPa, thrust positive) [HBI's tau = tau0 + dtau_qs - eta V]",
                 "Column #5 = Normal stress (MPa, compression positive) = 50 + dsigma_n",
                 "The line below lists the names of the data fields"])
             f.write("t slip slip_rate shear_stress normal_stress\n")
@@ -126,9 +129,9 @@ def main():
         return s[key][min(idx, len(s['k']) - 1)]
 
     with open(os.path.join(a.out, "events.txt"), "w") as f:
-        f.write("# BP3-QD HBI %s: events = intervals with max slip rate > 1e-3 m/s (1 yr = 3.1536e7 s)\n" % a.commit)
+        f.write("# BP3-QD (%s) HBI %s: events = intervals with max slip rate > 1e-3 m/s (1 yr = 3.1536e7 s)\n" % (meta['sense'], a.commit))
         f.write("# t_start = first step with max V > 1e-3; t_end = first step after with max V <= 1e-3 (after the last step above if the run ended)\n")
-        f.write("# slip_0km/slip_10km at t_end (m, thrust positive); sn0 = normal stress at 0 km (MPa, compression +) at the step before t_start and at t_end\n")
+        f.write("# slip_0km/slip_10km at t_end (m, thrust positive, cumulative from t = 0); sn0 = normal stress at 0 km (MPa, compression +) at the step before t_start and at t_end\n")
         f.write("# n t_start_s t_start_yr t_end_s peak_log10Vmax peak_Vmax t_peak_s slip_0km slip_10km sn0_before sn0_after\n")
         for n, (i, j, ip) in enumerate(ev, 1):
             je = min(j + 1, len(km) - 1)

@@ -9,7 +9,8 @@ every dtout_co s while max V > 1e-3 m/s) we evaluate the 2D plane-strain half-sp
 V_p t on the plane below W_f = 40 km:
   u(x,t) = sum_i slip_i(t) [G(x, d_i_top) - G(x, d_i_bot)] + V_p t G(x, W_f),
 G(x,d) = surface displacement of unit thrust slip on the plane from down-dip distance d to
-infinity (checked against Okada's DC3D with a +-1e4 km long strike: |diff| < 1.4e-4 m per m).
+infinity (thrust-positive slip: for the normal-faulting run the signed HBI slip and V_p < 0 give
+the hanging wall subsiding; checked against Okada's DC3D with a +-1e4 km long strike: |diff| < 1.4e-4 m per m).
 x is horizontal, positive in the dip direction (x > 0: hanging wall), trace at x = 0;
 u_x positive toward +x, u_z positive UP. Reference: u = 0 at t = 0 (zero slip, zero creep), and the
 symmetric frame: far from the fault the hanging wall moves by +V_p t/2 up dip and the footwall by
@@ -18,7 +19,7 @@ V_p t/2 down dip (another frame adds a term linear in t: V_p t (cos dip, -sin di
 import argparse, os, sys
 import numpy as np
 
-VP, WF = 1e-9, 40.0  # m/s, km
+WF = 40.0  # km; V_p (signed, -1e-9 m/s for normal faulting) is read from bp3.in
 
 
 def G(x, d, th):
@@ -41,6 +42,8 @@ def main():
     th = np.radians(a.dip)
     inp = {l.split()[0]: l.split()[1] for l in open(os.path.join(a.native, "bp3.in")) if len(l.split()) >= 2}
     n, ds = int(inp['ncellg']), float(inp['ds'])
+    VP = float(inp['vpl'])  # signed: -1e-9 for normal faulting
+    sense = "thrust" if VP > 0 else "normal"
     t = np.array([float(l.split()[1]) for l in open(os.path.join(a.native, "output", "time0.dat")) if l.strip()])
     r = np.fromfile(os.path.join(a.native, "output", "slip0.dat"), dtype="<f8")
     nf = min(len(t), r.size // n)
@@ -58,9 +61,9 @@ def main():
         uz = slip @ gz + VP * t * cz
         name = os.path.join(a.out, "srfst_x%+03d.dat" % int(x))
         with open(name, "w") as f:
-            f.write("# SEAS BP3-QD (dip %g thrust), HBI peer run: surface displacement at x = %+g km "
-                    "(x > 0 hanging wall), from HBI slip frames + creep Vp t below 40 km (post-processed, not HBI)\n" % (a.dip, x))
-            f.write("# frame: far field of hanging wall +Vp t/2 up dip, footwall Vp t/2 down dip; u = 0 at t = 0\n")
+            f.write("# SEAS BP3-QD (dip %g %s), HBI peer run: surface displacement at x = %+g km "
+                    "(x > 0 hanging wall), from HBI slip frames + creep Vp t below 40 km (post-processed, not HBI)\n" % (a.dip, sense, x))
+            f.write("# frame: far field of hanging wall +Vp t/2 up dip, footwall Vp t/2 down dip (Vp = %g m/s, signed); u = 0 at t = 0\n" % VP)
             f.write("# frames: every 1 yr between events, every dtout_co s during events\n")
             f.write("# Column #1 = Time (s), #2 = u_x (m, + in the dip direction, i.e. toward the hanging wall), #3 = u_z (m, + up)\n")
             f.write("t disp_x disp_z\n")

@@ -120,6 +120,8 @@ namespace
          "  seas-bp1-qd.prm       SEAS BP1-QD (antiplane, quasi-dynamic)\n"
          "  seas-bp1-fd.prm       SEAS BP1-FD (antiplane, fully dynamic)\n"
          "  seas-bp2-qd.prm       SEAS BP2-QD (BP1-QD with D_c = 4 mm)\n"
+         "  seas-bp3-qd.prm       SEAS BP3-QD (60-degree thrust between two "
+         "deformable sides)\n"
          "  seas-bp4-qd.prm       SEAS BP4-QD (3D whole space, free rake)\n"
          "  seas-bp5-qd.prm       SEAS BP5-QD (3D half-space, free rake)\n"
          "  seas-bp6-qd-a.prm     SEAS BP6-QD-A (fluid injection, ageing law)\n"

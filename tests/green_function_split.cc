@@ -40,7 +40,7 @@
 // the box is symmetric in x, and rounding picks one of the two
 // mirror-image nodes, which moved when the normal coupling's rounding
 // entered).
-// Printed: the event in years to 0.001, log10 of the peak to 0.01, the
+// Printed: the event in years to 0.01, log10 of the peak to 0.01, the
 // displacement in mm to 0.1 (rounding moves the last digits of each).
 #include "run_model.h"
 #include "tests.h"
@@ -148,8 +148,8 @@ namespace
       }
     const double year = 3.15576e7;
     const auto  &e1 = one.events[0], &e2 = two.events[0];
-    dealii::deallog << "first event [yr]: one-sided " << fixed(e1[1] / year, 3)
-                    << ", two-sided " << fixed(e2[1] / year, 3)
+    dealii::deallog << "first event [yr]: one-sided " << fixed(e1[1] / year, 2)
+                    << ", two-sided " << fixed(e2[1] / year, 2)
                     << "; within 1e-6: "
                     << yes(std::abs(e2[1] / e1[1] - 1) < 1e-6) << std::endl;
     if (nucleation)

@@ -57,11 +57,6 @@ namespace rsfcycle
           refused + "with a fault-opposite side (Boundary roles) needs "
                     "Gravity = 0 (the initial slip of a split fault under "
                     "gravity is not implemented yet)");
-      if (scene.split_fault() && parameters.output.write_vtu)
-        throw std::invalid_argument(
-          refused + "with a fault-opposite side (Boundary roles) needs "
-                    "Output/Write VTU = false (the body's snapshot of a "
-                    "split fault is not implemented yet)");
       const double t_end = parameters.run.end_time;
       if ((scene.backstop_velocity(0.) - scene.backstop_velocity(t_end))
             .norm() != 0)

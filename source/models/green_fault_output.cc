@@ -1,11 +1,13 @@
 // The outputs of the quasi-dynamic fault with the bulk's Green's functions
 // (models/green_fault.h): its layout and samples for the writers, the VTU
 // snapshots of the whole body, the description in log.txt.
+#include <array>
 #include <cmath>
 #include <rsfcycle/format.h>
 #include <rsfcycle/models/contact_layout.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/output/snapshots.h>
+#include <rsfcycle/physics/split_fault.h>
 
 namespace rsfcycle
 {
@@ -124,30 +126,45 @@ namespace rsfcycle
       discretisation.reinit(b.u);
       discretisation.reinit(b.v);
       discretisation.reinit(b.a);
+      // the normal force with the slip's change (a split fault's)
+      const auto &N = normal_forces(state.slip.data(), state.t);
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          std::array<double, 2> slip = {{0., 0.}}, rate = {{0., 0.}};
+          for (unsigned int d = 0; d < nodes[k].n_dofs; ++d)
+            {
+              slip[d] = state.slip[first + dof_start[k] + d];
+              rate[d] = state.rate[first + dof_start[k] + d];
+            }
+          const double alpha = state.alpha[first_node + k];
+          const double V     = std::hypot(rate[0], rate[1]);
+          const double w     = contact.nodes()[k].weight;
+          b.alpha.push_back(alpha);
+          b.slip.push_back(std::hypot(slip[0], slip[1]));
+          b.slip_rate.push_back(V);
+          if (pore_pressure || op.normal_coupling)
+            b.normal_stress.push_back(N[k] / w);
+          b.shear_traction.push_back(
+            N[k] / w *
+            law.friction_coefficient(contact.nodes()[k].params, alpha, V));
+        }
+      if (scene.split_fault())
+        {
+          split_body_fields(state, b);
+          return b;
+        }
+
       // the load boundaries at V t (the load velocity is constant: check())
       discretisation.set_fixed_values(b.v, state.t);
       for (const auto &dof : discretisation.backstop_dofs)
         b.u.local_element(dof.index) = state.t * b.v.local_element(dof.index);
       for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          std::array<double, 2> rate = {{0., 0.}};
-          for (unsigned int d = 0; d < nodes[k].n_dofs; ++d)
-            {
-              const unsigned int i                = first + dof_start[k] + d;
-              b.u.local_element(nodes[k].dofs[d]) = state.slip[i];
-              b.v.local_element(nodes[k].dofs[d]) = state.rate[i];
-              rate[d]                             = state.rate[i];
-            }
-          const auto  &node  = contact.nodes()[k];
-          const double alpha = state.alpha[first_node + k];
-          const double V     = std::hypot(rate[0], rate[1]);
-          b.alpha.push_back(alpha);
-          if (pore_pressure)
-            b.normal_stress.push_back(normal_force(k, state.t) / node.weight);
-          b.shear_traction.push_back(
-            normal_force(k, state.t) / node.weight *
-            law.friction_coefficient(node.params, alpha, V));
-        }
+        for (unsigned int d = 0; d < nodes[k].n_dofs; ++d)
+          {
+            const unsigned int i                = first + dof_start[k] + d;
+            b.u.local_element(nodes[k].dofs[d]) = state.slip[i];
+            b.v.local_element(nodes[k].dofs[d]) = state.rate[i];
+          }
       if (!static_solver)
         {
           std::vector<unsigned int> dofs;
@@ -160,6 +177,46 @@ namespace rsfcycle
       static_solver->solve(b.u, &discretisation.body_force);
       static_solver->solve(b.v);
       return b;
+    }
+
+
+    template <int dim>
+    void
+    GreenFault<dim>::split_body_fields(const State &state, BodyState &b) const
+    {
+      if (!split_body)
+        {
+          // the set-up's tied system again (no observation rows), kept
+          // with the factor of its interior block
+          auto system =
+            physics::gather_system(discretisation, contact.contact_set(), {});
+          physics::tie_split_fault(discretisation, system);
+          auto solver = std::make_unique<physics::InteriorSolver>(system);
+          split_body  = std::make_unique<SplitBody>(
+            SplitBody{std::move(system), std::move(solver)});
+        }
+      const auto &system = split_body->system;
+      const auto &p      = *discretisation.partitioner;
+      // the contact at s (V), the fixed dofs at v_b t (v_b), the rest in
+      // equilibrium; untied, this rank's dofs, the hanging ones distributed
+      const auto fill = [&](const std::vector<double> &contact_values,
+                            const double               t,
+                            const bool                 with_force,
+                            la::Vector                &u) {
+        std::vector<double> x(system.n(), 0.);
+        for (unsigned int i = 0; i < system.n(); ++i)
+          if (system.fixed[i])
+            x[i] = t * system.fixed_velocity[i];
+        for (unsigned int k = 0; k < system.contact_dofs.size(); ++k)
+          x[system.contact_dofs[k]] = contact_values[k];
+        split_body->solver->equilibrium(system, x, with_force);
+        physics::untie_split_fault(system, x);
+        for (unsigned int i = 0; i < p.locally_owned_size(); ++i)
+          u.local_element(i) = x[p.local_to_global(i)];
+        discretisation.hanging_constraints.distribute(u);
+      };
+      fill(state.slip, state.t, true, b.u);
+      fill(state.rate, 1., false, b.v);
     }
 
 

@@ -226,7 +226,8 @@ namespace rsfcycle
         n_fields, la::Vector(discretisation.scalar_partitioner));
       field[log_slip_rate]            = std::log10(1e-20);
       const auto               &nodes = contact.nodes();
-      const std::vector<double> rates = contact.slip_rates(state.v);
+      const std::vector<double> rates =
+        state.slip_rate.empty() ? contact.slip_rates(state.v) : state.slip_rate;
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           const auto &info = nodes[k];
@@ -249,8 +250,10 @@ namespace rsfcycle
                                           state.normal_stress[k];
           field[rate_minus_v0].local_element(dof) = rates[k] - v0;
           field[slip_um].local_element(dof) =
-            1e6 *
-            solvers::tangential_norm(contact.contact_set().nodes[k], state.u);
+            1e6 * (state.slip.empty() ?
+                     solvers::tangential_norm(contact.contact_set().nodes[k],
+                                              state.u) :
+                     state.slip[k]);
         }
       for (const Field f : {slip_rate,
                             theta,

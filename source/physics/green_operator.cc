@@ -3,11 +3,8 @@
 #include <algorithm>
 #include <boost/crc.hpp>
 #include <cmath>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <rsfcycle/physics/green_operator.h>
-#include <rsfcycle/solvers/sparse_cholesky.h>
+#include <rsfcycle/physics/interior_solver.h>
 #include <stdexcept>
 
 namespace rsfcycle
@@ -35,39 +32,21 @@ namespace rsfcycle
       const unsigned int n_own = K.rank_offsets[rank + 1] - first;
       const auto        &contact_dofs = K.contact_dofs;
 
-      // the contact's dofs (c), the unknowns besides them (I)
-      std::vector<int>          contact_index(n, -1), interior_index(n, -1);
-      std::vector<unsigned int> interior;
+      // the contact's dofs (c); the unknowns besides them and the fixed
+      // ones (I) and the Cholesky factor of K_II
+      std::vector<int> contact_index(n, -1);
       for (unsigned int k = 0; k < n_c; ++k)
         contact_index[contact_dofs[k]] = k;
-      for (unsigned int i = 0; i < n; ++i)
-        if (!fixed[i] && contact_index[i] < 0)
-          {
-            interior_index[i] = interior.size();
-            interior.push_back(i);
-          }
-      const unsigned int n_I = interior.size();
+      const InteriorSolver interior(K);
+      const unsigned int   n_I            = interior.n_interior();
+      const auto           interior_index = [&interior](const unsigned int i) {
+        return interior.interior_index(i);
+      };
 
       GreenOperator op;
       op.n_interior = n_I;
       op.n_nodes    = n_c;
       op.first_row  = first;
-
-      // K_II and its Cholesky factor
-      dealii::DynamicSparsityPattern dsp(n_I, n_I);
-      for (unsigned int k = 0; k < n_I; ++k)
-        for (auto e = K.row_begin(interior[k]); e < K.row_end(interior[k]); ++e)
-          if (interior_index[K.columns[e]] >= 0)
-            dsp.add(k, interior_index[K.columns[e]]);
-      dealii::SparsityPattern pattern;
-      pattern.copy_from(dsp);
-      dealii::SparseMatrix<double> K_II(pattern);
-      for (unsigned int k = 0; k < n_I; ++k)
-        for (auto e = K.row_begin(interior[k]); e < K.row_end(interior[k]); ++e)
-          if (interior_index[K.columns[e]] >= 0)
-            K_II.set(k, interior_index[K.columns[e]], K.values[e]);
-      solvers::SparseCholesky cholesky;
-      cholesky.factorize(K_II);
 
       // The loads: the force f (body force and shear prestress) and the
       // prescribed velocity v_b of the fixed dofs (zero but on loads).
@@ -87,10 +66,10 @@ namespace rsfcycle
         dealii::FullMatrix<double> B(n_I, 2), Z;
         for (unsigned int k = 0; k < n_I; ++k)
           {
-            B(k, 0) = f[interior[k]];
-            B(k, 1) = -K_fixed_v(interior[k]);
+            B(k, 0) = f[interior.interior_dof(k)];
+            B(k, 1) = -K_fixed_v(interior.interior_dof(k));
           }
-        cholesky.solve(B, Z);
+        interior.solve(B, Z);
         ++op.n_blocks;
         op.g0.reinit(n_own);
         op.g1.reinit(n_own);
@@ -100,7 +79,7 @@ namespace rsfcycle
             op.g0[r]               = f[row];
             op.g1[r]               = -K_fixed_v(row);
             for (auto e = K.row_begin(row); e < K.row_end(row); ++e)
-              if (const int i = interior_index[K.columns[e]]; i >= 0)
+              if (const int i = interior_index(K.columns[e]); i >= 0)
                 {
                   op.g0[r] -= K.values[e] * Z(i, 0);
                   op.g1[r] -= K.values[e] * Z(i, 1);
@@ -109,7 +88,7 @@ namespace rsfcycle
         dealii::Vector<double> o0(n_rows), o1(n_rows);
         for (unsigned int p = 0; p < n_rows; ++p)
           for (const auto &[j, w] : row_of(p))
-            if (const int i = interior_index[j]; i >= 0)
+            if (const int i = interior_index(j); i >= 0)
               {
                 o0[p] += w * Z(i, 0);
                 o1[p] += w * Z(i, 1);
@@ -145,10 +124,10 @@ namespace rsfcycle
             {
               const unsigned int row = contact_dofs[b0 + jj];
               for (auto e = K.row_begin(row); e < K.row_end(row); ++e)
-                if (const int i = interior_index[K.columns[e]]; i >= 0)
+                if (const int i = interior_index(K.columns[e]); i >= 0)
                   B(i, jj) = K.values[e];
             }
-          cholesky.solve(B, X);
+          interior.solve(B, X);
           ++op.n_blocks;
           for (unsigned int r = 0; r < n_c; ++r)
             {
@@ -156,7 +135,7 @@ namespace rsfcycle
               for (auto e = K.row_begin(row); e < K.row_end(row); ++e)
                 {
                   const unsigned int col = K.columns[e];
-                  if (const int i = interior_index[col]; i >= 0)
+                  if (const int i = interior_index(col); i >= 0)
                     for (unsigned int jj = 0; jj < nb; ++jj)
                       op.S(b0 + jj - first, r) -= K.values[e] * X(i, jj);
                   else if (const int q = contact_index[col];
@@ -167,7 +146,7 @@ namespace rsfcycle
             }
           for (unsigned int p = 0; p < n_rows; ++p)
             for (const auto &[j, w] : row_of(p))
-              if (const int i = interior_index[j]; i >= 0)
+              if (const int i = interior_index(j); i >= 0)
                 for (unsigned int jj = 0; jj < nb; ++jj)
                   O(p, b0 + jj) -= w * X(i, jj);
               else if (const int q = contact_index[j];

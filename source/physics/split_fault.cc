@@ -145,6 +145,29 @@ namespace rsfcycle
           text += (d > 0 ? ", " : "") + format_number(vertex.x[d]);
         return text + ")";
       }
+      using Terms = std::vector<std::pair<unsigned int, double>>;
+
+      /**
+       * Row j of T (u = T u~): the tied unknowns l and weights T_jl that
+       * make dof j of the kind `kind` with partner `partner`.
+       */
+      Terms
+      tie_terms(const unsigned char kind,
+                const unsigned int  partner,
+                const unsigned int  j)
+      {
+        switch (kind)
+          {
+            case tie_slip:
+              return {{j, 0.5}, {partner, 1.}};
+            case tie_mean:
+              return {{partner, -0.5}, {j, 1.}};
+            case tie_gone:
+              return {{partner, 1.}};
+            default:
+              return {{j, 1.}};
+          }
+      }
     } // namespace
 
 
@@ -171,17 +194,9 @@ namespace rsfcycle
       std::vector<bool> taken(minus.size(), false);
 
       // per dof: its part in the pairs and its partner
-      enum Kind : unsigned char
-      {
-        none,
-        slip,   // tangential, + side: becomes s
-        mean,   // tangential, - side: becomes m
-        normal, // normal, + side: becomes w
-        gone    // normal, - side: eliminated
-      };
-      const unsigned int        n = system.n();
-      std::vector<Kind>         kind(n, none);
-      std::vector<unsigned int> partner(n, 0);
+      const unsigned int         n = system.n();
+      std::vector<unsigned char> kind(n, tie_none);
+      std::vector<unsigned int>  partner(n, 0);
       const unsigned int normal_component = discretisation.normal_component();
       // per + tangential dof: its node's + normal dof and outward normal
       std::map<unsigned int, std::pair<unsigned int, double>> normal_of;
@@ -209,8 +224,8 @@ namespace rsfcycle
           for (unsigned int c = 0; c < p.n_components; ++c)
             {
               const unsigned int a = p.dofs[c], b = m.dofs[c];
-              kind[a]    = c == normal_component ? normal : slip;
-              kind[b]    = c == normal_component ? gone : mean;
+              kind[a]    = c == normal_component ? tie_normal : tie_slip;
+              kind[b]    = c == normal_component ? tie_gone : tie_mean;
               partner[a] = b;
               partner[b] = a;
               if (c != normal_component && normal_component < p.n_components)
@@ -226,30 +241,19 @@ namespace rsfcycle
 
       // u_j = sum over (l, T_jl) of forward(j) of T_jl u~_l, and
       // u~ of new dof k gathers the rows (i, T_ik) of backward(k)
-      using Terms        = std::vector<std::pair<unsigned int, double>>;
-      const auto forward = [&](const unsigned int j) -> Terms {
-        switch (kind[j])
-          {
-            case slip:
-              return {{j, 0.5}, {partner[j], 1.}};
-            case mean:
-              return {{partner[j], -0.5}, {j, 1.}};
-            case gone:
-              return {{partner[j], 1.}};
-            default:
-              return {{j, 1.}};
-          }
+      const auto forward = [&](const unsigned int j) {
+        return tie_terms(kind[j], partner[j], j);
       };
       const auto backward = [&](const unsigned int k) -> Terms {
         switch (kind[k])
           {
-            case slip:
+            case tie_slip:
               return {{k, 0.5}, {partner[k], -0.5}};
-            case mean:
+            case tie_mean:
               return {{partner[k], 1.}, {k, 1.}};
-            case normal:
+            case tie_normal:
               return {{k, 1.}, {partner[k], 1.}};
-            case gone:
+            case tie_gone:
               return {};
             default:
               return {{k, 1.}};
@@ -264,7 +268,7 @@ namespace rsfcycle
       for (unsigned int k = 0; k < n; ++k)
         {
           row.clear();
-          if (kind[k] == gone)
+          if (kind[k] == tie_gone)
             row.emplace_back(k, 1.);
           for (const auto &[i, t_ik] : backward(k))
             for (std::size_t e = system.row_begin(i); e < system.row_end(i);
@@ -291,7 +295,7 @@ namespace rsfcycle
       // GreenFault refuses gravity with a split fault)
       std::vector<double> pair_force = system.force;
       for (unsigned int a = 0; a < n; ++a)
-        if (kind[a] == slip)
+        if (kind[a] == tie_slip)
           pair_force[partner[a]] -= system.force[a];
       std::vector<double> force(n, 0.), velocity = system.fixed_velocity;
       std::vector<bool>   fixed = system.fixed;
@@ -303,7 +307,7 @@ namespace rsfcycle
           const unsigned int b   = partner[a];
           const auto        &v   = system.fixed_velocity;
           const auto        &fix = system.fixed;
-          if (kind[a] == slip)
+          if (kind[a] == tie_slip)
             {
               if (!fix[a] && fix[b])
                 throw std::invalid_argument(
@@ -314,7 +318,7 @@ namespace rsfcycle
               velocity[a] = fix[b] ? v[a] - v[b] : 2 * v[a];
               velocity[b] = fix[b] ? 0.5 * (v[a] + v[b]) : 0.;
             }
-          else if (kind[a] == normal)
+          else if (kind[a] == tie_normal)
             {
               fixed[a]    = fix[a] || fix[b];
               velocity[a] = fix[a] ? v[a] : v[b];
@@ -349,12 +353,28 @@ namespace rsfcycle
             system.normal_rows.push_back(std::move(normal_row));
           }
 
+      system.tie_kind       = std::move(kind);
+      system.tie_partner    = std::move(partner);
       system.row_start      = std::move(row_start);
       system.columns        = std::move(columns);
       system.values         = std::move(values);
       system.force          = std::move(force);
       system.fixed          = std::move(fixed);
       system.fixed_velocity = std::move(velocity);
+    }
+
+
+    void
+    untie_split_fault(const GlobalSystem &system, std::vector<double> &u)
+    {
+      const std::vector<double> tied = u;
+      for (unsigned int j = 0; j < u.size(); ++j)
+        {
+          u[j] = 0;
+          for (const auto &[l, t_jl] :
+               tie_terms(system.tie_kind[j], system.tie_partner[j], j))
+            u[j] += t_jl * tied[l];
+        }
     }
 
 

@@ -124,7 +124,7 @@ check_bp1 green-dashpots "dashpots" 'subsection Mesh file\nset Boundary roles = 
 check green-gravity "Normal stress" 'subsection Solver\nset Dynamics = quasi-dynamic\nset Bulk = green-function\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend'
 check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset Integrator = runge-kutta\nend'
 # A fault between two deformable sides (tests/meshes/split-fault-2d.msh):
-# the volume method (not implemented), gravity, VTU snapshots, a free
+# the volume method (not implemented), gravity, a free
 # contact normal, and an other side whose nodes do not all pair (tag 12
 # given the role free: the creeping fault's nodes have no partner; refused
 # after the set-up, before the run folder).
@@ -134,7 +134,6 @@ check_split() { # name, expected word, roles, prm body
 }
 check_split split-volume "fault-opposite needs Solver/Bulk = green-function" "1: contact, 2: creep, 3: free, 4: free, 5: load, 11: fault-opposite, 12: fault-opposite, 13: free, 14: free, 15: load-opposite" 'subsection Solver\nset Bulk = volume\nend\nsubsection Time stepping\nset Integrator = implicit\nend'
 check_split split-gravity "Gravity = 0" "1: contact, 2: creep, 3: free, 4: free, 5: load, 11: fault-opposite, 12: fault-opposite, 13: free, 14: free, 15: load-opposite" 'subsection Mesh file\nset Gravity = 0, -9.81\nend'
-check_split split-vtu "Write VTU = false" "1: contact, 2: creep, 3: free, 4: free, 5: load, 11: fault-opposite, 12: fault-opposite, 13: free, 14: free, 15: load-opposite" 'subsection Output\nset Write VTU = true\nend'
 check_split split-unpaired "has no node of a fault-opposite face" "1: contact, 2: creep, 3: free, 4: free, 5: load, 11: fault-opposite, 12: free, 13: free, 14: free, 15: load-opposite" ''
 
 # The SEAS files of 3D models (SEAS BP5 on its coarse 4 km cells): station

@@ -14,7 +14,9 @@
 #include <rsfcycle/physics/body_state.h>
 #include <rsfcycle/physics/contact_quadrature.h>
 #include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/physics/global_system.h>
 #include <rsfcycle/physics/green_operator.h>
+#include <rsfcycle/physics/interior_solver.h>
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/physics/static_solver.h>
 #include <rsfcycle/solvers/fault_solver.h>
@@ -195,9 +197,11 @@ namespace rsfcycle
 
       /**
        * The whole body at a state: u and v of the static equilibrium with
-       * the contact's tangential dofs at the slip and the slip rate and
-       * the load boundaries at V t and V, the friction state and traction
-       * of this rank's nodes.
+       * the contact's tangential dofs at the slip and the slip rate (a
+       * split fault: the jump between its sides) and the load boundaries
+       * at V t and V, and per node of this rank the friction state, the
+       * slip, the slip rate and the traction (the normal stress too where
+       * it changes).
        */
       BodyState
       body(const State &state) const;
@@ -349,8 +353,25 @@ namespace rsfcycle
       std::vector<double>     all_normal_stresses;
       /** The static solves of body() (made at its first call). */
       mutable std::unique_ptr<physics::StaticSolver<dim>> static_solver;
-      State                                               initial;
-      mutable Vector                                      force_work;
+      /**
+       * A split fault's body: the tied system and the factor of its
+       * interior block (made at body()'s first call).
+       */
+      struct SplitBody
+      {
+        physics::GlobalSystem                    system;
+        std::unique_ptr<physics::InteriorSolver> solver;
+      };
+      mutable std::unique_ptr<SplitBody> split_body;
+      /**
+       * body() of a split fault: u and v of the tied system's equilibrium
+       * with the slip (rate) between the two sides, the load boundaries at
+       * V t (V), untied (physics/split_fault.h).
+       */
+      void
+                     split_body_fields(const State &state, BodyState &b) const;
+      State          initial;
+      mutable Vector force_work;
       /** normal_forces()'s buffers: per own node, per own dof. */
       mutable std::vector<double> normal_work, normal_change;
       /** The implicit step's scheme and fault solver. */

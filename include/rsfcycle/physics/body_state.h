@@ -27,6 +27,14 @@ namespace rsfcycle
      * the output, not kept in checkpoints.
      */
     std::vector<double> normal_stress;
+    /**
+     * The slip and slip rate per node (magnitudes) [m, m/s] where the
+     * contact's displacement is not the slip (the Green's-function method:
+     * a split fault's two sides move); empty: the contact dofs' tangential
+     * displacement and velocity. Made for the output, not kept in
+     * checkpoints.
+     */
+    std::vector<double> slip, slip_rate;
 
     template <class Archive>
     void

@@ -57,6 +57,14 @@ namespace rsfcycle
        * outward normal [N/m^(3-dim)]; empty otherwise.
        */
       std::vector<ObservationRow> normal_rows;
+      /**
+       * With a split fault, tied (physics/split_fault.h): per dof, its part
+       * in the tie (physics::TieKind) and its partner dof on the fault's
+       * other side, what untie_split_fault() maps the tied unknowns back
+       * with; empty otherwise.
+       */
+      std::vector<unsigned char> tie_kind;
+      std::vector<unsigned int>  tie_partner;
 
       unsigned int
       n() const

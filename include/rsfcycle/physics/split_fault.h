@@ -51,6 +51,25 @@ namespace rsfcycle
     void
     tie_split_fault(const Discretisation<dim> &discretisation,
                     GlobalSystem              &system);
+
+    /** A dof's part in the tie of a split fault (GlobalSystem::tie_kind). */
+    enum TieKind : unsigned char
+    {
+      tie_none,
+      tie_slip,   // tangential, + side: becomes s
+      tie_mean,   // tangential, - side: becomes m
+      tie_normal, // normal, + side: becomes w
+      tie_gone    // normal, - side: eliminated
+    };
+
+    /**
+     * The displacement u = T u~ of the untied dofs from the tied unknowns
+     * u~ of a system that tie_split_fault() rewrote (all dofs, in place):
+     * u_a = m + s/2 and u_b = m - s/2 of every tangential pair, the normal
+     * w on both sides.
+     */
+    void
+    untie_split_fault(const GlobalSystem &system, std::vector<double> &u);
   } // namespace physics
 } // namespace rsfcycle
 

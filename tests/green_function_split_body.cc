@@ -1,6 +1,6 @@
 // The whole body of a split fault in the Green's-function method
 // (GreenFault::body(), what its VTU snapshots show): SEAS BP3-QD's 60°
-// thrust fault between two deformable sides (prm/seas-bp3-qd.prm) on 400 m
+// thrust fault between two deformable sides (prm/seas-bp3-qd.prm) on 200 m
 // fault cells, a fault state with a smooth slip and slip rate of the
 // down-dip distance d (s = 2 m exp(-((d - 10 km) / 5 km)^2), V = 1e-9 m/s
 // (1 + d / 40 km), t = 30 years) turned into the displacement and velocity

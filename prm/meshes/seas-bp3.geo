@@ -2,7 +2,8 @@
 // that dips `dip` degrees (30, 60 or 90) from the surface point (0, 0),
 // both sides meshed apart (split nodes: a fault between two deformable
 // sides, doc/mesh-file.md), x to the right, y up. The fault's
-// rate-and-state part runs W_f = 40 km down dip (1.6 km cells, refined by
+// rate-and-state part runs W_f = 40 km down dip (1.6 km segments, 800 m
+// cells after the subdivision into quadrilaterals, refined by
 // rsfcycle toward it: prm/seas-bp3-qd.prm), its creeping extension to the
 // bottom at 4000 km depth; the far sides 4000 km beyond. The 2D
 // displacement of slip decays only like 1/r, so the truncation of the

@@ -117,6 +117,8 @@ namespace
          "  wedge-3d.prm          the 3D laboratory wedge\n"
          "  wedge-3d-paper.prm    the 3D wedge at the paper's resolution\n"
          "  subduction-2d.prm     a kilometre-scale subduction zone (mesh-file)\n"
+         "  subduction-2d-slab.prm  the same with a deformable slab "
+         "(split fault)\n"
          "  seas-bp1-qd.prm       SEAS BP1-QD (antiplane, quasi-dynamic)\n"
          "  seas-bp1-fd.prm       SEAS BP1-FD (antiplane, fully dynamic)\n"
          "  seas-bp2-qd.prm       SEAS BP2-QD (BP1-QD with D_c = 4 mm)\n"

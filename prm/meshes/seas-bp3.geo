@@ -17,10 +17,29 @@
 // footwall's (load-opposite); volumes 10 (hanging wall) and 20 (footwall).
 // Regenerate (e.g. dip 30):
 //   gmsh -2 -format msh2 -setnumber dip 30 -o seas-bp3-30.msh seas-bp3.geo
+// Other geometries (-setnumber NAME VALUE): the fault's frictional length
+// Wf, the segment size h on it, the depth D and the far sides' distance L
+// (prm/subduction-2d-slab.prm: a 15-degree megathrust, frictional to
+// 53.6 km depth,
+//   gmsh -2 -format msh2 -setnumber dip 15 -setnumber Wf 207055
+//        -setnumber h 2588.19 -setnumber D 1000e3 -setnumber L 2000e3
+//        -o subduction-2d-slab.msh seas-bp3.geo).
 If (!Exists(dip))
   dip = 60;
 EndIf
-psi = dip * Pi / 180; Wf = 40e3; D = 4000e3; L = 4000e3; h = 1600;
+If (!Exists(Wf))
+  Wf = 40e3;
+EndIf
+If (!Exists(h))
+  h = 1600;
+EndIf
+If (!Exists(D))
+  D = 4000e3;
+EndIf
+If (!Exists(L))
+  L = 4000e3;
+EndIf
+psi = dip * Pi / 180;
 xf = Wf * Cos(psi); yf = -Wf * Sin(psi); xb = D / Tan(psi);
 For side In {0:1}
   o = 100 * side;

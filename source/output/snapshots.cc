@@ -365,6 +365,7 @@ namespace rsfcycle
       fault.add_data_vector(field[theta], "state");
       fault.add_data_vector(field[slip_um], "slip_um");
       fault.add_data_vector(field[traction], "shear_traction");
+      fault.add_data_vector(field[normal_stress], "normal_stress");
       fault.add_data_vector(field[mu], "friction_coefficient");
       fault.build_patches();
       fault.to_frame(frame, 0);

@@ -89,7 +89,7 @@ def main():
     with open(os.path.join(a.native, "bp3.in"), "w") as f:
         f.write("\n".join(L) + "\n")
     with open(os.path.join(a.native, "stations.json"), "w") as f:
-        json.dump(dict(cell=a.cell, ncell=n, tau0=sg * tau0, eta=eta, sense=a.sense, stations=st), f, indent=1)
+        json.dump(dict(cell=a.cell, ncell=n, tau0=sg * tau0, eta=eta, sense=a.sense, dip=a.dip, stations=st), f, indent=1)
     print("bp3.in (%s): %d cells of %g m, tau0 = %.15g MPa (HBI tauinit = tau0 - eta Vinit), %d station cells"
           % (a.sense, n, a.cell, sg * tau0, len(cells)))
 

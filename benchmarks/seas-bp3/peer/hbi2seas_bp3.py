@@ -25,7 +25,7 @@ VTH = 1e-3
 
 def header(f, commit, meta, extra):
     f.write("# This is the file header:\n")
-    f.write("# problem=SEAS Benchmark BP3-QD (dip 60 deg, %s)\n" % meta['sense'])
+    f.write("# problem=SEAS Benchmark BP3-QD (dip %g deg, %s)\n" % (meta.get('dip', 60), meta['sense']))
     f.write("# code=HBI (github.com/sozawa94/hbi) commit %s + rsfcycle patch hbi-bp5.patch "
             "(problem 2dph: half-space edge-dislocation kernels for shear and normal traction)\n" % commit)
     f.write("# modeler=rsfcycle peer run (independent public code)\n")

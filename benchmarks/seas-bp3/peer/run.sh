@@ -1,5 +1,5 @@
 #!/bin/bash
-# Independent peer run of SEAS BP3-QD (60 deg dipping thrust or normal fault, half-space, slip-induced
+# Independent peer run of SEAS BP3-QD (a dipping thrust or normal fault, half-space, slip-induced
 # normal-stress changes) with HBI (github.com/sozawa94/hbi).
 #
 # usage: PEER_SRC=/work/peers/hbi-bp3 benchmarks/seas-bp3/peer/run.sh OUTDIR
@@ -11,6 +11,7 @@
 #   DTMAX      max time step in s (default 3153600 = 0.1 yr of 365 d; interseismic sampling)
 #   TMAX       end time in years of 365 d (default 1500)
 #   NICE       nice level (default 10)
+#   DIP        the fault's dip in degrees (default 60; BP3 also runs 30 and 90)
 #   SENSE      thrust (default) or normal: BP3's normal-faulting variant, V_p = V_init = -1e-9 m/s and
 #              prestress -tau0; outputs stay thrust-positive (slip, shear stress negative)
 # Writes OUTDIR/{fltst_dpXXX.dat,global.dat,events.txt,srfst_x[+-]8.dat,timing.txt} and keeps HBI's native
@@ -28,6 +29,7 @@ DTMAX=${DTMAX:-3153600}
 TMAX=${TMAX:-1500}
 NICE=${NICE:-10}
 SENSE=${SENSE:-thrust}
+DIP=${DIP:-60}
 case $SENSE in thrust|normal) ;; *) echo "SENSE must be thrust or normal" >&2; exit 2;; esac
 OUT=${1:?usage: PEER_SRC=DIR $0 OUTDIR}
 
@@ -39,17 +41,17 @@ BIN=$HBI_BIN
 # ---------------------------------------------------------------- input, run, convert
 N=$OUT/native
 rm -rf "$N"; mkdir -p "$N"
-$PY "$HERE/bp3_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX" --sense "$SENSE"
-echo "== BP3-QD ($SENSE): HBI $HBI_COMMIT + $(basename "$PATCH"), cell ${CELL} m, eps_r $EPS, dtmax $DTMAX s, tmax $TMAX yr -> $OUT"
+$PY "$HERE/bp3_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX" --sense "$SENSE" --dip "$DIP"
+echo "== BP3-QD (dip $DIP, $SENSE): HBI $HBI_COMMIT + $(basename "$PATCH"), cell ${CELL} m, eps_r $EPS, dtmax $DTMAX s, tmax $TMAX yr -> $OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 ( cd "$N" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.in > log.txt 2>&1 ) || true
 grep -q "Time exceeds tmax" "$N/log.txt" || { echo "WARNING: HBI did not reach tmax" >&2; tail -3 "$N/log.txt" >&2; }
 nice -n "$NICE" $PY "$HERE/hbi2seas_bp3.py" "$N" "$OUT" --commit "$HBI_COMMIT"
 # surface displacement at x = +-8 km (post-processed from HBI slip frames; HBI does not compute it)
-nice -n "$NICE" $PY "$HERE/hbi_surface_bp3.py" "$N" "$OUT"
+nice -n "$NICE" $PY "$HERE/hbi_surface_bp3.py" "$N" "$OUT" --dip "$DIP"
 {
   echo "code=HBI $HBI_COMMIT + $(basename "$PATCH")"
-  echo "case=BP3-QD dip 60 $SENSE, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
+  echo "case=BP3-QD dip $DIP $SENSE, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
   echo "host=$(hostname) nproc=$(nproc --all) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: one core busy with another computation)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"

@@ -258,10 +258,13 @@ namespace rsfcycle
           return compressed ? double(compressed->stored_entries()) :
                               double(op.n_rows()) * op.n_contact();
         };
-        operator_megabytes = Utilities::MPI::max(
-          8e-6 * (stored(op.compressed) +
-                  (op.normal_coupling ? stored(op.compressed_normal) : 0.)),
-          communicator);
+        operator_megabytes =
+          Utilities::MPI::max(8e-6 *
+                                (stored(op.compressed) +
+                                 (op.normal_coupling && !op.normal_negligible ?
+                                    stored(op.compressed_normal) :
+                                    0.)),
+                              communicator);
       }
 
       // The initial slip is the volume path's: the tangential displacement

@@ -249,7 +249,10 @@ namespace rsfcycle
         log << " (" << op.n_rows() << " rows on rank 0 of " << ranks << ")";
       log << ", " << format_number(operator_megabytes)
           << " MB on the rank that holds most";
-      if (op.normal_coupling)
+      if (op.normal_coupling && op.normal_negligible)
+        log << ", the slip's normal stress change negligible (at most "
+               "1e-10 of S: a symmetric problem) and left out";
+      else if (op.normal_coupling)
         log << ", the slip's normal stress change " << op.n_rows() << " x "
             << op.n_contact()
             << (op.compressed_normal ? " as an H-matrix (" : " dense (")

@@ -192,7 +192,9 @@ namespace rsfcycle
                                 const double  t,
                                 double       *force) const
     {
-      if (compressed_normal)
+      if (normal_negligible)
+        std::fill(force, force + n0.size(), 0.);
+      else if (compressed_normal)
         compressed_normal->vmult(slip, force);
       else
         {
@@ -223,7 +225,9 @@ namespace rsfcycle
       // (S symmetric: on one rank its rows are all rows, and half is kept)
       compressed = std::make_shared<const solvers::HierarchicalMatrix>(
         S, rows, points, dim, tolerance, rows == points);
-      if (normal_coupling)
+      normal_negligible =
+        normal_coupling && N.frobenius_norm() <= 1e-10 * S.frobenius_norm();
+      if (normal_coupling && !normal_negligible)
         compressed_normal = std::make_shared<const solvers::HierarchicalMatrix>(
           N, rows, points, dim, tolerance, false);
       std::vector<double> x(n), dense(m), h(m);
@@ -264,7 +268,7 @@ namespace rsfcycle
       if (!compressed)
         throw std::logic_error("release_dense() before compress()");
       S = dealii::FullMatrix<double>();
-      if (compressed_normal)
+      if (compressed_normal || normal_negligible)
         N = dealii::FullMatrix<double>();
     }
 

@@ -31,8 +31,10 @@
 //    of its rate, to 1 % of the largest change).
 // Printed: the first event's peak slip rate, its end (the maximum slip rate
 // through 1 mm/s, between rows; not the run's last row, whose step the
-// controller sizes) and the slips at two stations (rounded: the run is coarse;
-// its resolution is not the benchmark's, benchmarks/seas-bp5/README.md).
+// controller sizes; to 50 s: it moved from 744 to 737 s with the rounding of
+// another machine's arithmetic, the rows near the end being seconds apart)
+// and the slips at two stations (rounded: the run is coarse; its resolution
+// is not the benchmark's, benchmarks/seas-bp5/README.md).
 #include "run_model.h"
 #include "tests.h"
 
@@ -221,8 +223,9 @@ main(int argc, char **argv)
     }
   std::ostringstream digest;
   digest << std::fixed << std::setprecision(1) << "first event: peak log10 V "
-         << peak << ", below 1 mm/s from t " << std::setprecision(0) << end
-         << " s; slip at (0, 10) km " << std::setprecision(1)
+         << peak << ", below 1 mm/s from t " << std::setprecision(0)
+         << 50 * std::round(end / 50) << " s; slip at (0, 10) km "
+         << std::setprecision(1)
          << read_seas(out + "fltst_strk+00dp+10").back()[1] * 1e3
          << " mm, at (-24, 10) km "
          << read_seas(out + "fltst_strk-24dp+10").back()[1] * 1e3 << " mm";

@@ -69,11 +69,16 @@ def value_at(table, t, column):
 
 def main():
     args = sys.argv[1:]
+    if any(a in ("-h", "--help") for a in args):
+        print(__doc__)
+        return
     until = float("inf")
     if "--until" in args:
         k = args.index("--until")
         until = float(args[k + 1]) * YEAR
         del args[k:k + 2]
+    if len(args) != 2:
+        sys.exit("usage: compare.py RSFCYCLE_RUN HBI_RUN [--until YEARS]")
     ours, peer = args
     g1, g2 = rows(ours + "/global.dat"), rows(peer + "/global.dat")
     e1 = [e for e in events(g1[:, 0], g1[:, 1]) if e[0] < until]

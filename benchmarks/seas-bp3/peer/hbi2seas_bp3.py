@@ -54,7 +54,7 @@ def main():
     js = json.load(open(os.path.join(a.native, "stations.json")))
     inp = read_inp(os.path.join(a.native, "bp3.in"))
     meta = dict(cell=js['cell'], ncell=js['ncell'], eps=inp['eps_r'][0], dtmax=inp['dtmax'][0],
-                sense=js.get('sense', 'thrust'))
+                sense=js.get('sense', 'thrust'), dip=js.get('dip', 60))
     tau_init = float(inp['tauinit'][0]); sig_init = float(inp['sigmainit'][0]); v_init = float(inp['velinit'][0])
     os.makedirs(a.out, exist_ok=True)
 

@@ -2,22 +2,10 @@
 // method (physics::GreenOperator::N, physics/split_fault.h): the normal
 // stress change that slip on a dipping fault makes through the free
 // surface (SEAS BP3's Delta sigma_n), against the closed form of an edge
-// dislocation in a half-space. For a dislocation at down-dip distance z on
-// a fault of dip delta that reaches the surface, observed on the fault at
-// down-dip distance t, with D = t^2 + z^2 - 2 t z cos(2 delta) (the squared
-// distance from the dislocation's image above the surface), the shear and
-// normal (compression positive) stresses on the fault per unit thrust slip
-// are (Segall, Earthquake and Volcano Deformation, 2010, ch. 3; the
-// full-space edge dislocation's mu / (2 pi (1 - nu) (t - z)) as t -> z)
-//   T_s = 2 mu z (t + z) sin^2(delta) [P1 + P2 cos 2 delta + t^2 z^2 cos 4
-//         delta] / (pi (1 - nu) (t - z) D^3),
-//     P1 = t^4 - 3 t^3 z + 7 t^2 z^2 - 3 t z^3 + z^4,
-//     P2 = t^4 - 5 t^3 z + 4 t^2 z^2 - 5 t z^3 + z^4,
-//   T_n = -4 mu z^2 cos(delta) sin^3(delta) (z^3 - 3 t^2 z + 2 t^3 cos 2
-//         delta) / (pi (1 - nu) D^3),
-// and a unit thrust slip on a < x_d < b makes T(t, b) - T(t, a). (T_n
-// vanishes at delta = 90 degrees: the vertical fault's normal stress does
-// not change, as green_function_split's mirror models need.) The mesh:
+// dislocation in a half-space (Segall 2010: T_s and T_n of a unit thrust
+// slip, tests/edge_dislocation.h; a unit thrust slip on a < x_d < b makes
+// T(t, b) - T(t, a); T_n vanishes at 90 degrees, as green_function_split's
+// mirror models need). The mesh:
 // tests/meshes/dipping-split-2d.msh (BP3's 60-degree fault, the hanging
 // wall x > fault the + side, the footwall the - side, meshed apart),
 // refined to 63 m next to the fault; mu = 32.04 GPa, nu = 1/4;
@@ -36,6 +24,7 @@
 //    the rate of the normal forces n1 + N s' (s' the plates' relative
 //    velocity, -1e-9 m/s along the frame's x) vanishes, within 1e-7 of
 //    the locked fault's n1 (rounding: 3e-9).
+#include "edge_dislocation.h"
 #include "tests.h"
 
 #include <cmath>
@@ -54,20 +43,7 @@ namespace
   std::array<double, 2>
   dislocation(const double t, const double z)
   {
-    const double c2 = std::cos(2 * delta), sd = std::sin(delta);
-    const double D = t * t + z * z - 2 * t * z * c2, D3 = D * D * D;
-    const double t2 = t * t, z2 = z * z;
-    const double P1 =
-      t2 * t2 - 3 * t2 * t * z + 7 * t2 * z2 - 3 * t * z2 * z + z2 * z2;
-    const double P2 =
-      t2 * t2 - 5 * t2 * t * z + 4 * t2 * z2 - 5 * t * z2 * z + z2 * z2;
-    const double shear = 2 * mu * z * (t + z) * sd * sd *
-                         (P1 + P2 * c2 + t2 * z2 * std::cos(4 * delta)) /
-                         (M_PI * (1 - nu) * (t - z) * D3);
-    const double normal = -4 * mu * z2 * std::cos(delta) * sd * sd * sd *
-                          (z2 * z - 3 * t2 * z + 2 * t2 * t * c2) /
-                          (M_PI * (1 - nu) * D3);
-    return {{shear, normal}};
+    return edge_dislocation(t, z, delta, mu, nu);
   }
 } // namespace
 

@@ -17,15 +17,9 @@
 //                                                c = 0, 1, 2: x, y, z)
 //   station,i,name,x,y,z,0,0,c,displacement [m] (c = 0, 1, 2 as the
 //                                                Observation components)
-#include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
+#include "../../green_operator_tool.h"
+
 #include <iomanip>
-#include <iostream>
-#include <rsfcycle/models/green_fault.h>
-#include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
-#include <sstream>
-#include <string>
 #include <vector>
 
 int
@@ -38,33 +32,20 @@ main(int argc, char **argv)
       if (argc != 7)
         throw std::invalid_argument(
           "usage: okada_operator_response PRM REFINEMENTS X1 X2 Z1 Z2");
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) != 1)
-        throw std::invalid_argument("runs on one rank");
       const double x1 = std::stod(argv[3]), x2 = std::stod(argv[4]);
       const double z1 = std::stod(argv[5]), z2 = std::stod(argv[6]);
 
       dealii::ParameterHandler prm;
       scenes::declare_parameters(prm);
       scenes::parse_parameter_file(prm, argv[1]);
-      if (prm.get_integer("Dimension") != 3)
-        throw std::invalid_argument(std::string(argv[1]) +
-                                    ": Dimension must be 3");
       prm.enter_subsection("Mesh");
       prm.set("Local refinements", std::string(argv[2]));
       prm.leave_subsection();
-      Parameters parameters;
-      parameters.parse_parameters(prm);
-      if (parameters.solver.bulk != SolverParameters::Bulk::green_function)
-        throw std::invalid_argument(std::string(argv[1]) +
-                                    ": Solver/Bulk must be green-function");
-
-      const auto         scene = scenes::make_scene<3>(prm.get("Scene"), prm);
-      std::ostringstream log;
-      models::GreenFault<3> fault(parameters, *scene, log);
-      fault.setup();
-      std::cerr << log.str();
-      const auto &op    = fault.green_operator();
-      const auto &nodes = fault.contact_quadrature().nodes();
+      const GreenOperatorTool<3> tool(prm, argv[1]);
+      const auto                &scene = tool.scene;
+      const auto                &fault = *tool.fault;
+      const auto                &op    = fault.green_operator();
+      const auto                &nodes = fault.contact_quadrature().nodes();
       if (op.n_contact() != 2 * nodes.size() || op.n_rows() != op.n_contact())
         throw std::runtime_error("expected two tangential dofs per node");
 

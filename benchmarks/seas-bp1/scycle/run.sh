@@ -42,6 +42,8 @@ shift
 [ -n "${SCYCLE_SRC:-}" ] || die "set SCYCLE_SRC to a clone of https://github.com/kali-allison/SCycle"
 [ -f "$SCYCLE_SRC/source/Makefile" ] || die "$SCYCLE_SRC is not an SCycle clone (no source/Makefile)"
 [ -x /usr/bin/time ] || die "/usr/bin/time not found (Debian package time)"
+"$PYTHON" -c "import h5py, numpy" 2> /dev/null ||
+    die "$PYTHON cannot import h5py and numpy (stats.py needs them): apt-get install -y python3-h5py python3-numpy"
 [ ! -e "$outdir/log.txt" ] || die "$outdir has a run already (log.txt)"
 SCYCLE_SRC=$(cd "$SCYCLE_SRC" && pwd)
 

@@ -239,6 +239,11 @@ namespace
         "Solver/Linear correction = direct runs on one MPI rank, not on " +
         std::to_string(n_processes) +
         ": choose multigrid or amg, or start it without mpirun");
+    if (n_processes > 1 && parameters.solver.direct_fallback)
+      throw std::invalid_argument(
+        "Solver/Direct fallback = true runs on one MPI rank, not on " +
+        std::to_string(n_processes) + ": set it false, or start it without " +
+        "mpirun");
     simulation->prepare(resume);
     // The first rank prepares the folder and writes the log; every rank
     // learns whether the folder was refused.

@@ -362,6 +362,17 @@ namespace rsfcycle
                       "system), direct (sparse Cholesky with a Schur "
                       "complement on the contact), or amg (Trilinos ML, "
                       "preconditioning CG)");
+    prm.declare_entry("Direct fallback",
+                      "false",
+                      Bool(),
+                      "A spatial problem whose TNNMG solve with the linear "
+                      "correction above does not converge within Maximum "
+                      "TNNMG iterations is solved again, from where it "
+                      "stopped, with the direct correction before the step "
+                      "is refused (one MPI rank): for meshes whose wide "
+                      "refined zone stalls the multigrid correction at "
+                      "large steps, while it stays the faster one at small "
+                      "steps [true/false]");
     prm.declare_entry("Multigrid smoothing steps",
                       "3",
                       Integer(1, 100),
@@ -429,6 +440,7 @@ namespace rsfcycle
       prm.get_integer("Maximum fixed-point iterations");
     linear_correction =
       Choice<LinearCorrection>::parse(prm.get("Linear correction"));
+    direct_fallback        = prm.get_bool("Direct fallback");
     smoothing_steps        = prm.get_integer("Multigrid smoothing steps");
     correction_cycles      = prm.get_integer("Linear correction cycles");
     correction_tolerance   = prm.get_double("Linear correction tolerance");

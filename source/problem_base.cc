@@ -194,7 +194,12 @@ namespace rsfcycle
     solvers::TNNMGControl tnnmg_control;
     tnnmg_control.max_iterations   = solver.max_tnnmg_iterations;
     tnnmg_control.truncation_ratio = solver.truncation_ratio;
-    tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction, tnnmg_control);
+    if (solver.direct_fallback &&
+        solver.linear_correction != Correction::direct)
+      fallback_correction = std::make_unique<solvers::DirectCorrection>();
+    tnnmg = std::make_unique<solvers::TNNMG>(*linear_correction,
+                                             tnnmg_control,
+                                             fallback_correction.get());
     tnnmg->set_timer(&timer);
   }
 
@@ -487,7 +492,8 @@ namespace rsfcycle
         << discretisation.gravity_iterations << " iterations\n";
     const auto &solver = parameters.solver;
     log << "Solver: " << name_of(solver.coupling) << " coupling, "
-        << name_of(solver.linear_correction) << " linear correction, "
+        << name_of(solver.linear_correction) << " linear correction"
+        << (fallback_correction ? " (direct fallback), " : ", ")
         << solver.law->name() << " law, " << name_of(solver.dynamics) << ", "
         << scheme->describe() << std::endl;
     if (const auto *mg =

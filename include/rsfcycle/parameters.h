@@ -189,6 +189,7 @@ namespace rsfcycle
     double           fixed_point_tolerance      = 1e-5;
     unsigned int     max_fixed_point_iterations = 20;
     LinearCorrection linear_correction          = LinearCorrection::multigrid;
+    bool             direct_fallback            = false;
     unsigned int     smoothing_steps            = 3;
     unsigned int     correction_cycles          = 1;
     double           correction_tolerance       = 1e-2;

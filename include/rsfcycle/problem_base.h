@@ -195,6 +195,8 @@ namespace rsfcycle
     physics::Discretisation<dim>               discretisation;
     physics::ContactQuadrature<dim>            contact;
     std::unique_ptr<solvers::LinearCorrection> linear_correction;
+    /** Solver/Direct fallback: the direct correction, else null. */
+    std::unique_ptr<solvers::LinearCorrection> fallback_correction;
     std::unique_ptr<solvers::TNNMG>            tnnmg;
     /** The time scheme of the implicit step (`Solver/Time scheme`). */
     const std::unique_ptr<const time::TimeScheme> scheme;

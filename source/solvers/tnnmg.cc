@@ -45,8 +45,11 @@ namespace rsfcycle
     } // namespace
 
 
-    TNNMG::TNNMG(LinearCorrection &correction, const TNNMGControl &control)
+    TNNMG::TNNMG(LinearCorrection   &correction,
+                 const TNNMGControl &control,
+                 LinearCorrection   *fallback)
       : correction(correction)
+      , fallback(fallback)
       , control(control)
     {}
 
@@ -316,6 +319,32 @@ namespace rsfcycle
       hessians.assign(contact.nodes.size(), {{0., 0., 0., 0.}});
 
       TNNMGStatistics stats;
+      iterate(
+        problem, v, tolerance, correction, "TNNMG: linear correction", stats);
+      if (!stats.converged && fallback != nullptr &&
+          std::isfinite(stats.relative_change))
+        {
+          stats.fell_back = true;
+          iterate(problem,
+                  v,
+                  tolerance,
+                  *fallback,
+                  "TNNMG: fallback correction",
+                  stats);
+        }
+      return stats;
+    }
+
+
+    void
+    TNNMG::iterate(const SpatialProblem &problem,
+                   la::Vector           &v,
+                   const double          tolerance,
+                   LinearCorrection     &linear,
+                   const char           *section_name,
+                   TNNMGStatistics      &stats)
+    {
+      const ContactSet &contact = *problem.contact;
       for (unsigned int iteration = 0; iteration < control.max_iterations;
            ++iteration)
         {
@@ -336,7 +365,7 @@ namespace rsfcycle
           }
 
           // 3. Linear correction.
-          auto                  scope = section("TNNMG: linear correction");
+          auto                  scope = section(section_name);
           TruncatedNewtonSystem system;
           system.assembled_A   = problem.assembled_A;
           system.local_A       = problem.local_A;
@@ -346,7 +375,7 @@ namespace rsfcycle
           system.matrix_key    = problem.matrix_key;
           correction_vector    = 0;
           stats.linear_iterations +=
-            correction.solve(system, newton_rhs, correction_vector);
+            linear.solve(system, newton_rhs, correction_vector);
           for (unsigned int i = 0; i < correction_vector.locally_owned_size();
                ++i)
             if (truncated[i])
@@ -379,15 +408,14 @@ namespace rsfcycle
           if (!std::isfinite(stats.relative_change))
             {
               stats.converged = false;
-              return stats;
+              return;
             }
           if (stats.relative_change <= tolerance)
             {
               stats.converged = true;
-              return stats;
+              return;
             }
         }
-      return stats;
     }
 
   } // namespace solvers

@@ -32,6 +32,8 @@ namespace rsfcycle
       unsigned int linear_iterations = 0;
       bool         converged         = false;
       double       relative_change   = 0;
+      /** The solve went on with the fallback correction. */
+      bool fell_back = false;
     };
 
     /**
@@ -44,14 +46,21 @@ namespace rsfcycle
     class TNNMG
     {
     public:
-      TNNMG(LinearCorrection &correction, const TNNMGControl &control);
+      /**
+       * With a fallback correction, a solve that does not converge within
+       * max_iterations goes on from its last iterate with the fallback for
+       * up to max_iterations more (Solver/Direct fallback).
+       */
+      TNNMG(LinearCorrection   &correction,
+            const TNNMGControl &control,
+            LinearCorrection   *fallback = nullptr);
 
       /**
        * Minimise J starting from v (fixed entries must hold their values),
        * until ||v_k - v_{k-1}||_A <= tolerance * ||v_k||_A (the caller
        * chooses it per solve: the inexact fixed point loosens it in early
        * iterations). Returns statistics; v holds the last iterate.
-       * Non-finite values give converged = false.
+       * Non-finite values give converged = false (and no fallback).
        */
       TNNMGStatistics
       solve(const SpatialProblem &problem,
@@ -93,7 +102,17 @@ namespace rsfcycle
                   const la::Vector     &v,
                   const la::Vector     &c);
 
+      /** The iterations of solve() with one linear correction. */
+      void
+      iterate(const SpatialProblem &problem,
+              la::Vector           &v,
+              double                tolerance,
+              LinearCorrection     &linear,
+              const char           *section_name,
+              TNNMGStatistics      &stats);
+
       LinearCorrection    &correction;
+      LinearCorrection    *fallback;
       TNNMGControl         control;
       dealii::TimerOutput *timer = nullptr;
 

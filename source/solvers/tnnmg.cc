@@ -323,15 +323,12 @@ namespace rsfcycle
         problem, v, tolerance, correction, "TNNMG: linear correction", stats);
       if (!stats.converged && fallback != nullptr &&
           std::isfinite(stats.relative_change))
-        {
-          stats.fell_back = true;
-          iterate(problem,
-                  v,
-                  tolerance,
-                  *fallback,
-                  "TNNMG: fallback correction",
-                  stats);
-        }
+        iterate(problem,
+                v,
+                tolerance,
+                *fallback,
+                "TNNMG: fallback correction",
+                stats);
       return stats;
     }
 

@@ -32,8 +32,6 @@ namespace rsfcycle
       unsigned int linear_iterations = 0;
       bool         converged         = false;
       double       relative_change   = 0;
-      /** The solve went on with the fallback correction. */
-      bool fell_back = false;
     };
 
     /**

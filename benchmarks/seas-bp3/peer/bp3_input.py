@@ -2,12 +2,17 @@
 """Write HBI's input for SEAS BP3-QD (60 deg thrust or normal, half-space, normal-stress coupling).
 
 usage: bp3_input.py NATIVE_DIR --cell METRES --eps E --dtmax S --tmax YR [--dip DEG] [--sense thrust|normal]
+                    [--stiffen F]
 
 --sense normal (BP3's normal-faulting variant): V_p = -1e-9 m/s, V_init = -1e-9 m/s and the
 prestress -tau0 (tau0 from |V_init|, same formula), i.e. every signed quantity of the thrust
 input flips; the state psi (theta0) is unchanged. HBI's slip, V and tau are signed in the
 thrust-positive sense (V = 2 V0 exp(-psi/a) sinh(tau/(sigma a)), aging law with |V|, stress
 rate K (V - V_p)), so no source change is needed.
+
+--stiffen F (a sensitivity study, not the benchmark): the kernels' shear modulus times F and
+the shear-wave speed times F, so the elastic response is F times stiffer and the radiation
+damping mu / (2 c_s) and the prestress stay the benchmark's.
 
 Writes NATIVE_DIR/bp3.in (HBI problem '2dph': planar fault of NCELL = 40 km / cell
 elements from the free surface, dip DEG, half-space edge-dislocation kernel for shear
@@ -58,6 +63,7 @@ def main():
     ap.add_argument("--dip", type=float, default=60.0)
     ap.add_argument("--dtout_co", default="1.0")
     ap.add_argument("--sense", choices=["thrust", "normal"], default="thrust")
+    ap.add_argument("--stiffen", type=float, default=1.0)
     a = ap.parse_args()
     sg = 1.0 if a.sense == "thrust" else -1.0  # sign of V_p, V_init and the prestress
     n = int(round(P['Wf'] / a.cell))
@@ -73,7 +79,8 @@ def main():
             f.write("%.17g\n" % a_of((i + 0.5) * a.cell))
     L = ["problem 2dph",              # planar dipping fault from the free surface, half-space kernels
          "ncellg %d" % n, "ds %.17g" % (a.cell / 1e3), "dipangle %g" % a.dip, "ztop 0.0",
-         "rigid 32.04", "vs 3.464", "pois 0.25",   # GPa, km/s; eta = rigid/(2 vs)
+         "rigid %.17g" % (32.04 * a.stiffen), "vs %.17g" % (3.464 * a.stiffen),
+         "pois 0.25",   # GPa, km/s; eta = rigid/(2 vs)
          "filenumber 0", "nstep 100000000", "interval 100000000",
          "tmax %s" % a.tmax, "dtout 1.0", "dtout_co %s" % a.dtout_co,
          "eps_r %s" % a.eps, "dtmax %s" % a.dtmax, "velth 1e-3",

@@ -8,6 +8,8 @@
 #              commit (../../hbi-peer.sh) and patched with ../../seas-bp5/peer/hbi-bp5.patch.
 #   CELL       element size in m (default 25; must divide 2500)
 #   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
+#   STIFFEN    the kernels F times stiffer, the damping unchanged (default 1: the benchmark;
+#              a sensitivity study, bp3_input.py --stiffen)
 #   DTMAX      max time step in s (default 3153600 = 0.1 yr of 365 d; interseismic sampling)
 #   TMAX       end time in years of 365 d (default 1500)
 #   NICE       nice level (default 10)
@@ -30,6 +32,7 @@ TMAX=${TMAX:-1500}
 NICE=${NICE:-10}
 SENSE=${SENSE:-thrust}
 DIP=${DIP:-60}
+STIFFEN=${STIFFEN:-1}
 case $SENSE in thrust|normal) ;; *) echo "SENSE must be thrust or normal" >&2; exit 2;; esac
 OUT=${1:?usage: PEER_SRC=DIR $0 OUTDIR}
 
@@ -41,7 +44,7 @@ BIN=$HBI_BIN
 # ---------------------------------------------------------------- input, run, convert
 N=$OUT/native
 rm -rf "$N"; mkdir -p "$N"
-$PY "$HERE/bp3_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX" --sense "$SENSE" --dip "$DIP"
+$PY "$HERE/bp3_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX" --sense "$SENSE" --dip "$DIP" --stiffen "$STIFFEN"
 echo "== BP3-QD (dip $DIP, $SENSE): HBI $HBI_COMMIT + $(basename "$PATCH"), cell ${CELL} m, eps_r $EPS, dtmax $DTMAX s, tmax $TMAX yr -> $OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 ( cd "$N" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.in > log.txt 2>&1 ) || true
@@ -51,7 +54,7 @@ nice -n "$NICE" $PY "$HERE/hbi2seas_bp3.py" "$N" "$OUT" --commit "$HBI_COMMIT"
 nice -n "$NICE" $PY "$HERE/hbi_surface_bp3.py" "$N" "$OUT" --dip "$DIP"
 {
   echo "code=HBI $HBI_COMMIT + $(basename "$PATCH")"
-  echo "case=BP3-QD dip $DIP $SENSE, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
+  echo "case=BP3-QD dip $DIP $SENSE, stiffen=$STIFFEN, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
   echo "host=$(hostname) nproc=$(nproc --all) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: one core busy with another computation)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"

@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Write the HBI input for SEAS BP5-QD (problem 3dph: rectangular elements, Okada half-space).
 
-usage: bp5_input.py OUTDIR --cell KM --eps E --dtmax S --tmax YR
+usage: bp5_input.py OUTDIR --cell KM --eps E --dtmax S --tmax YR [--stiffen F]
+
+--stiffen F (a sensitivity study, not the benchmark): the kernel's shear modulus and the
+shear-wave speed times F, so the elastic response is F times stiffer and the radiation damping
+mu / (2 c_s) and the prestress stay the benchmark's.
 
 Writes OUTDIR/bp5.in, OUTDIR/bp5_param.dat (columns a dc tau vel, HBI's cell order) and
 OUTDIR/stations.json (the cells around each SEAS station, read by hbi2seas.py).
@@ -51,6 +55,7 @@ def main():
     ap.add_argument("--eps", default="1e-6")
     ap.add_argument("--dtmax", default="3.1536e6")
     ap.add_argument("--tmax", default="1800")
+    ap.add_argument("--stiffen", type=float, default=1.0)
     ap.add_argument("--dtout", default="1.0", help="field frames between events (yr)")
     ap.add_argument("--dtout-co", default="1.0", help="field frames during events (s)")
     a = ap.parse_args()
@@ -93,7 +98,7 @@ def main():
         "problem 3dph",            # planar fault in a half space, rectangular elements, Okada kernel
         "imax %d" % imax, "jmax %d" % jmax, "ds %g" % ds,
         "dipangle 90.0", "crake 0.0",   # vertical, pure strike slip (fixed rake)
-        "rigid 32.04", "vs 3.464", "pois 0.25",
+        "rigid %.17g" % (32.04 * a.stiffen), "vs %.17g" % (3.464 * a.stiffen), "pois 0.25",
         "filenumber 0", "nstep 2000000000", "interval 2000000000",
         "tmax %s" % a.tmax,        # yr of 365 d
         "dtout %s" % a.dtout, "dtout_co %s" % a.dtout_co,

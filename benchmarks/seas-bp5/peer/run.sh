@@ -10,6 +10,8 @@
 #   DTMAX      max time step in s (default 3153600 = 0.1 yr of 365 d; sets the interseismic sampling)
 #   TMAX       end time in years of 365 d (default 1800 = 56764800000 s)
 #   NICE       nice level (default 10)
+#   STIFFEN    the kernel F times stiffer, the damping unchanged (default 1: the benchmark;
+#              a sensitivity study, bp5_input.py --stiffen)
 #   PARAM_FILE optional: replace the generated bp5_param.dat (a dc tau vel per cell) by this file,
 #              e.g. $PEER_SRC/examples/bp5r_param.dat (HBI's shipped BP5 parameters, CELL=1 only)
 # Writes the SEAS files to OUTDIR (fltst_strk*.dat, global.dat, profiles, events.dat, timing.txt)
@@ -25,6 +27,7 @@ EPS=${EPS:-1e-6}
 DTMAX=${DTMAX:-3153600}
 TMAX=${TMAX:-1800}
 NICE=${NICE:-10}
+STIFFEN=${STIFFEN:-1}
 OUT=${1:?usage: PEER_SRC=DIR $0 OUTDIR}
 
 # ---------------------------------------------------------------- source + build (outside the repo)
@@ -35,7 +38,7 @@ BIN=$HBI_BIN
 # ---------------------------------------------------------------- input, run, convert
 N=$OUT/native
 rm -rf "$N"; mkdir -p "$N"
-$PY "$HERE/bp5_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX"
+$PY "$HERE/bp5_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX" --stiffen "$STIFFEN"
 if [ -n "${PARAM_FILE:-}" ]; then
   [ "$(($(wc -l < "$PARAM_FILE")))" -eq "$(($(wc -l < "$N/bp5_param.dat")))" ] || { echo "PARAM_FILE has the wrong cell count" >&2; exit 1; }
   cp "$PARAM_FILE" "$N/bp5_param.dat"; echo "parameters from $PARAM_FILE"
@@ -48,7 +51,7 @@ nice -n "$NICE" $PY "$HERE/hbi2seas.py" "$N" "$OUT" --commit "$HBI_COMMIT"
 {
   echo "code=HBI $HBI_COMMIT + $(basename "$PATCH")"
   [ -n "${PARAM_FILE:-}" ] && echo "parameter file: $PARAM_FILE"
-  echo "case=BP5-QD cell=${CELL}km eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
+  echo "case=BP5-QD stiffen=$STIFFEN cell=${CELL}km eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
   echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: the other core was busy with another engineer's compiles/runs)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"

@@ -9,6 +9,7 @@
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/physics/global_system.h>
+#include <rsfcycle/physics/split_fault.h>
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/simulator/simulator.templates.h>
 #include <rsfcycle/solvers/amg_correction.h>
@@ -45,6 +46,9 @@ namespace rsfcycle
     discretisation.make_grid();
     discretisation.setup_system();
     discretisation.setup_boundary_conditions();
+    discretisation.assemble_matrices();
+    if (scene.split_fault())
+      discretisation.tie_fault_sides();
     contact.setup(discretisation.dof_handler,
                   discretisation.scalar_dof_handler,
                   discretisation.hanging_constraints,
@@ -53,7 +57,6 @@ namespace rsfcycle
                   [this](const Point<dim> &p) {
                     return scene.friction_parameters(p);
                   });
-    discretisation.assemble_matrices();
   }
 
 
@@ -258,7 +261,10 @@ namespace rsfcycle
                                                      parameters.run.antiplane))
       {
         std::vector<std::pair<types::global_dof_index, double>> w;
-        for (const auto &[j, weight] : row)
+        for (const auto &[j, weight] :
+             discretisation.fault_tie.empty() ?
+               row :
+               physics::tie_row(discretisation.fault_tie, row))
           w.emplace_back(discretisation.local_index(j), weight);
         found.push_back(w.empty() ? 0. : 1.);
         observation_weights.push_back(w);
@@ -377,7 +383,9 @@ namespace rsfcycle
   output::Layout
   ProblemBase<dim>::layout() const
   {
-    return models::contact_layout(scene, contact);
+    output::Layout layout = models::contact_layout(scene, contact);
+    layout.normal_stress  = !discretisation.fault_normal_rows.empty();
+    return layout;
   }
 
 
@@ -411,6 +419,8 @@ namespace rsfcycle
           contact.gather(contact.tangential_displacement(state.v));
         sample.log10_states      = contact.gather(log10_states);
         sample.observation_rates = observed_uplift(state.v);
+        if (!state.normal_stress.empty())
+          sample.normal_stresses = contact.gather(state.normal_stress);
       }
     return sample;
   }
@@ -449,6 +459,24 @@ namespace rsfcycle
   ProblemBase<dim>::writers()
   {
     std::vector<std::unique_ptr<output::Writer>> list;
+    // a split fault: the fault's slip and slip rate from the tied unknowns,
+    // the body's displacement and velocity untied (both sides)
+    std::function<BodyState(const output::Record &)> body;
+    if (!discretisation.fault_tie.empty())
+      body = [this](const output::Record &record) {
+        BodyState   state = record.state_as<BodyState>();
+        const auto &nodes = contact.contact_set().nodes;
+        state.slip.resize(nodes.size());
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          state.slip[k] = solvers::tangential_norm(nodes[k], state.u);
+        state.slip_rate = contact.slip_rates(state.v);
+        for (la::Vector *field : {&state.u, &state.v})
+          {
+            physics::untie_split_fault(discretisation.fault_tie, *field);
+            discretisation.hanging_constraints.distribute(*field);
+          }
+        return state;
+      };
     if (parameters.output.write_vtu)
       list.push_back(std::make_unique<output::SnapshotWriter<dim>>(
         parameters.run.output_directory,
@@ -458,7 +486,8 @@ namespace rsfcycle
         scene.convergence_rate(),
         scene.output_frame(),
         parameters.output,
-        timer));
+        timer,
+        body));
     return list;
   }
 

@@ -168,13 +168,44 @@ namespace rsfcycle
               return {{j, 1.}};
           }
       }
+
+      Terms
+      forward_terms(const FaultTie &tie, const unsigned int j)
+      {
+        return tie_terms(tie.kind[j], tie.partner[j], j);
+      }
+
+      /** Column k of T: the dofs i and weights T_ik (K~ = T^T K T). */
+      Terms
+      backward_terms(const FaultTie &tie, const unsigned int k)
+      {
+        const unsigned int partner = tie.partner[k];
+        switch (tie.kind[k])
+          {
+            case tie_slip:
+              return {{k, 0.5}, {partner, -0.5}};
+            case tie_mean:
+              return {{partner, 1.}, {k, 1.}};
+            case tie_normal:
+              return {{k, 1.}, {partner, 1.}};
+            case tie_gone:
+              return {};
+            default:
+              return {{k, 1.}};
+          }
+      }
+
+      const std::string refused_opposite_load =
+        refused + "a fault-opposite node is prescribed (load-opposite) "
+                  "where its contact node is free; prescribe both sides or "
+                  "neither";
     } // namespace
 
 
     template <int dim>
-    void
-    tie_split_fault(const Discretisation<dim> &discretisation,
-                    GlobalSystem              &system)
+    FaultTie
+    pair_fault_sides(const Discretisation<dim> &discretisation,
+                     const unsigned int         n)
     {
       const auto plus  = fault_vertices(discretisation, true);
       auto       minus = fault_vertices(discretisation, false);
@@ -194,12 +225,12 @@ namespace rsfcycle
       std::vector<bool> taken(minus.size(), false);
 
       // per dof: its part in the pairs and its partner
-      const unsigned int         n = system.n();
-      std::vector<unsigned char> kind(n, tie_none);
-      std::vector<unsigned int>  partner(n, 0);
+      FaultTie tie;
+      tie.kind.assign(n, tie_none);
+      tie.partner.assign(n, 0);
+      auto              &kind             = tie.kind;
+      auto              &partner          = tie.partner;
       const unsigned int normal_component = discretisation.normal_component();
-      // per + tangential dof: its node's + normal dof and outward normal
-      std::map<unsigned int, std::pair<unsigned int, double>> normal_of;
       for (const auto &p : plus)
         {
           const std::size_t k =
@@ -229,7 +260,7 @@ namespace rsfcycle
               partner[a] = b;
               partner[b] = a;
               if (c != normal_component && normal_component < p.n_components)
-                normal_of[a] = {p.dofs[normal_component], p.outward};
+                tie.normal_of[a] = {p.dofs[normal_component], p.outward};
             }
         }
       for (unsigned int k = 0; k < minus.size(); ++k)
@@ -238,71 +269,128 @@ namespace rsfcycle
             refused + "the fault-opposite node at " + position(minus[k], dim) +
             " has no contact or creep node at its position; the two sides "
             "need the same nodes");
+      return tie;
+    }
 
-      // u_j = sum over (l, T_jl) of forward(j) of T_jl u~_l, and
-      // u~ of new dof k gathers the rows (i, T_ik) of backward(k)
-      const auto forward = [&](const unsigned int j) {
-        return tie_terms(kind[j], partner[j], j);
-      };
-      const auto backward = [&](const unsigned int k) -> Terms {
-        switch (kind[k])
-          {
-            case tie_slip:
-              return {{k, 0.5}, {partner[k], -0.5}};
-            case tie_mean:
-              return {{partner[k], 1.}, {k, 1.}};
-            case tie_normal:
-              return {{k, 1.}, {partner[k], 1.}};
-            case tie_gone:
-              return {};
-            default:
-              return {{k, 1.}};
-          }
-      };
 
-      // K~ = T^T K T, row by row
-      std::vector<std::size_t>  row_start(1, 0);
-      std::vector<unsigned int> columns;
-      std::vector<double>       values;
+    void
+    tie_matrix(const FaultTie            &tie,
+               std::vector<std::size_t>  &row_start,
+               std::vector<unsigned int> &columns,
+               std::vector<double>       &values)
+    {
+      const unsigned int        n = row_start.size() - 1;
+      std::vector<std::size_t>  new_start(1, 0);
+      std::vector<unsigned int> new_columns;
+      std::vector<double>       new_values;
       Terms                     row;
       for (unsigned int k = 0; k < n; ++k)
         {
           row.clear();
-          if (kind[k] == tie_gone)
+          if (tie.kind[k] == tie_gone)
             row.emplace_back(k, 1.);
-          for (const auto &[i, t_ik] : backward(k))
-            for (std::size_t e = system.row_begin(i); e < system.row_end(i);
-                 ++e)
-              for (const auto &[l, t_jl] : forward(system.columns[e]))
-                row.emplace_back(l, t_ik * system.values[e] * t_jl);
+          for (const auto &[i, t_ik] : backward_terms(tie, k))
+            for (std::size_t e = row_start[i]; e < row_start[i + 1]; ++e)
+              for (const auto &[l, t_jl] : forward_terms(tie, columns[e]))
+                row.emplace_back(l, t_ik * values[e] * t_jl);
           std::sort(row.begin(), row.end(), [](const auto &x, const auto &y) {
             return x.first < y.first;
           });
           for (std::size_t e = 0; e < row.size(); ++e)
-            if (e > 0 && row[e].first == columns.back())
-              values.back() += row[e].second;
+            if (e > 0 && row[e].first == new_columns.back())
+              new_values.back() += row[e].second;
             else
               {
-                columns.push_back(row[e].first);
-                values.push_back(row[e].second);
+                new_columns.push_back(row[e].first);
+                new_values.push_back(row[e].second);
               }
-          row_start.push_back(columns.size());
+          new_start.push_back(new_columns.size());
         }
+      row_start = std::move(new_start);
+      columns   = std::move(new_columns);
+      values    = std::move(new_values);
+    }
 
-      // f~ = T^T f; the prescribed dofs in the new unknowns
+
+    std::vector<double>
+    tie_force(const FaultTie &tie, const std::vector<double> &force)
+    {
       // (the tangential force on the + side is the shear prestress, the
       // fault's internal traction: it acts on the - side too, opposite;
-      // GreenFault refuses gravity with a split fault)
-      std::vector<double> pair_force = system.force;
+      // both methods refuse gravity with a split fault)
+      const unsigned int  n          = force.size();
+      std::vector<double> pair_force = force, tied(n, 0.);
       for (unsigned int a = 0; a < n; ++a)
-        if (kind[a] == tie_slip)
-          pair_force[partner[a]] -= system.force[a];
-      std::vector<double> force(n, 0.), velocity = system.fixed_velocity;
-      std::vector<bool>   fixed = system.fixed;
+        if (tie.kind[a] == tie_slip)
+          pair_force[tie.partner[a]] -= force[a];
       for (unsigned int k = 0; k < n; ++k)
-        for (const auto &[i, t_ik] : backward(k))
-          force[k] += t_ik * pair_force[i];
-      for (unsigned int a = 0; a < n; ++a)
+        for (const auto &[i, t_ik] : backward_terms(tie, k))
+          tied[k] += t_ik * pair_force[i];
+      return tied;
+    }
+
+
+    ObservationRow
+    tie_row(const FaultTie &tie, const ObservationRow &row)
+    {
+      ObservationRow tied;
+      for (const auto &[j, w] : row)
+        for (const auto &[l, t_jl] : forward_terms(tie, j))
+          tied.emplace_back(l, w * t_jl);
+      return tied;
+    }
+
+
+    std::vector<ObservationRow>
+    normal_force_rows(const FaultTie                  &tie,
+                      const std::vector<std::size_t>  &row_start,
+                      const std::vector<unsigned int> &columns,
+                      const std::vector<double>       &values,
+                      const std::vector<unsigned int> &contact_dofs)
+    {
+      // -n (K u)_c of the untied stiffness's row c (the + side's cells
+      // alone), in u~
+      std::vector<ObservationRow> rows;
+      if (!tie.normal_of.empty())
+        for (const unsigned int a : contact_dofs)
+          {
+            const auto [c, outward] = tie.normal_of.at(a);
+            ObservationRow row;
+            for (std::size_t e = row_start[c]; e < row_start[c + 1]; ++e)
+              for (const auto &[l, t_jl] : forward_terms(tie, columns[e]))
+                row.emplace_back(l, -outward * values[e] * t_jl);
+            rows.push_back(std::move(row));
+          }
+      return rows;
+    }
+
+
+    template <int dim>
+    void
+    tie_split_fault(const Discretisation<dim> &discretisation,
+                    GlobalSystem              &system)
+    {
+      FaultTie    tie     = pair_fault_sides(discretisation, system.n());
+      const auto  kind    = tie.kind;
+      const auto &partner = tie.partner;
+
+      // the normal force on each contact dof's node (+ side): the other
+      // side's push against the outward normal n
+      system.normal_rows = normal_force_rows(tie,
+                                             system.row_start,
+                                             system.columns,
+                                             system.values,
+                                             system.contact_dofs);
+      // K~ = T^T K T, f~ = T^T f, the observation rows in u~
+      tie_matrix(tie, system.row_start, system.columns, system.values);
+      system.force = tie_force(tie, system.force);
+      for (auto &observation : system.observations)
+        observation = tie_row(tie, observation);
+
+      // the prescribed dofs in the new unknowns
+      std::vector<double> velocity = system.fixed_velocity;
+      std::vector<bool>   fixed    = system.fixed;
+      for (unsigned int a = 0; a < system.n(); ++a)
         {
           const unsigned int b   = partner[a];
           const auto        &v   = system.fixed_velocity;
@@ -310,11 +398,7 @@ namespace rsfcycle
           if (kind[a] == tie_slip)
             {
               if (!fix[a] && fix[b])
-                throw std::invalid_argument(
-                  refused +
-                  "a fault-opposite node is prescribed (load-opposite) "
-                  "where its contact node is free; prescribe both sides or "
-                  "neither");
+                throw std::invalid_argument(refused_opposite_load);
               velocity[a] = fix[b] ? v[a] - v[b] : 2 * v[a];
               velocity[b] = fix[b] ? 0.5 * (v[a] + v[b]) : 0.;
             }
@@ -326,39 +410,8 @@ namespace rsfcycle
               velocity[b] = 0;
             }
         }
-
-      // the observation rows in the new unknowns
-      for (auto &observation : system.observations)
-        {
-          ObservationRow tied;
-          for (const auto &[j, w] : observation)
-            for (const auto &[l, t_jl] : forward(j))
-              tied.emplace_back(l, w * t_jl);
-          observation = std::move(tied);
-        }
-
-      // the normal force on each contact dof's node (+ side): the other
-      // side's push against the outward normal n, -n (K u)_c of the
-      // untied stiffness's row c (the + side's cells alone), in u~
-      system.normal_rows.clear();
-      if (!normal_of.empty())
-        for (const unsigned int a : system.contact_dofs)
-          {
-            const auto [c, outward] = normal_of.at(a);
-            ObservationRow normal_row;
-            for (std::size_t e = system.row_begin(c); e < system.row_end(c);
-                 ++e)
-              for (const auto &[l, t_jl] : forward(system.columns[e]))
-                normal_row.emplace_back(l, -outward * system.values[e] * t_jl);
-            system.normal_rows.push_back(std::move(normal_row));
-          }
-
-      system.tie_kind       = std::move(kind);
-      system.tie_partner    = std::move(partner);
-      system.row_start      = std::move(row_start);
-      system.columns        = std::move(columns);
-      system.values         = std::move(values);
-      system.force          = std::move(force);
+      system.tie_kind       = std::move(tie.kind);
+      system.tie_partner    = std::move(tie.partner);
       system.fixed          = std::move(fixed);
       system.fixed_velocity = std::move(velocity);
     }
@@ -374,6 +427,21 @@ namespace rsfcycle
           for (const auto &[l, t_jl] :
                tie_terms(system.tie_kind[j], system.tie_partner[j], j))
             u[j] += t_jl * tied[l];
+        }
+    }
+
+
+    void
+    untie_split_fault(const FaultTie &tie, la::Vector &u)
+    {
+      // (one rank: local and global numbering agree)
+      const la::Vector tied = u;
+      for (unsigned int j = 0; j < tie.kind.size(); ++j)
+        {
+          double value = 0;
+          for (const auto &[l, t_jl] : forward_terms(tie, j))
+            value += t_jl * tied.local_element(l);
+          u.local_element(j) = value;
         }
     }
 
@@ -449,5 +517,9 @@ namespace rsfcycle
     tie_split_fault(const Discretisation<2> &, GlobalSystem &);
     template void
     tie_split_fault(const Discretisation<3> &, GlobalSystem &);
+    template FaultTie
+    pair_fault_sides(const Discretisation<2> &, unsigned int);
+    template FaultTie
+    pair_fault_sides(const Discretisation<3> &, unsigned int);
   } // namespace physics
 } // namespace rsfcycle

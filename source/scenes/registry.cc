@@ -73,11 +73,19 @@ namespace rsfcycle
         {
           if (green_function())
             models::GreenFault<dim>::check(parameters, *scene);
-          else if (scene->split_fault())
+          else if (scene->split_fault() &&
+                   parameters.solver.linear_correction !=
+                     SolverParameters::LinearCorrection::direct)
             throw std::invalid_argument(
-              "Mesh file/Boundary roles: fault-opposite needs Solver/Bulk = "
-              "green-function (the volume method's fault between two "
-              "deformable sides is not implemented yet)");
+              "Solver/Linear correction: a fault-opposite side (Mesh "
+              "file/Boundary roles) in the volume method needs direct (the "
+              "multigrid levels and algebraic multigrid do not tie the two "
+              "sides yet)");
+          else if (scene->split_fault() && scene->gravity().norm() != 0)
+            throw std::invalid_argument(
+              "Mesh file/Gravity: a fault-opposite side (Boundary roles) "
+              "needs Gravity = 0 (the initial slip of a split fault under "
+              "gravity is not implemented yet)");
           else if (scene->pore_pressure())
             throw std::invalid_argument(
               "Mesh file/Friction/Pore pressure: needs Solver/Bulk = green-function "

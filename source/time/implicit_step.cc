@@ -111,14 +111,26 @@ namespace rsfcycle
                               const double                          tau,
                               BodyState                            &next)
     {
-      const unsigned int n_nodes      = contact.n_nodes();
-      const auto         update_state = [&](const la::Vector    &v_new,
+      const unsigned int n_nodes = contact.n_nodes();
+      // A split fault's normal coupling: the normal forces at the
+      // displacement of the step's end, updated with the state in the fixed
+      // point (the spatial problem for fixed normal forces stays convex); a
+      // node without compression fails the step.
+      const bool normal_coupling = !discretisation.fault_normal_rows.empty();
+      bool       compressed      = true;
+      if (normal_coupling)
+        compressed = couple_normal_forces(
+          old, next.v, tau, potentials, next.normal_stress);
+      const auto update_state = [&](const la::Vector    &v_new,
                                     const double         weight_new,
                                     std::vector<double> &alpha) {
         std::optional<dealii::TimerOutput::Scope> scope;
         if (timer != nullptr)
           scope.emplace(*timer, "State update");
         update_states(old, v_new, weight_new, tau, alpha);
+        if (normal_coupling)
+          compressed = couple_normal_forces(
+            old, v_new, tau, potentials, next.normal_stress);
       };
 
       const bool explicit_coupling =
@@ -138,6 +150,14 @@ namespace rsfcycle
       const auto solve_velocity = [&](const std::vector<double> &alpha_k,
                                       la::Vector                &v) {
         ++k;
+        if (!compressed)
+          {
+            why = "t = " + format_number(t + tau) + " s, step " +
+                  format_number(tau) +
+                  " s: a fault node lost its compression (the normal "
+                  "stress changed by the slip is not positive)";
+            return false;
+          }
         const double sigma = scheme.friction_state_weight();
         for (unsigned int i = 0; i < n_nodes; ++i)
           potentials[i].set_state(sigma == 1 ? alpha_k[i] :
@@ -266,29 +286,9 @@ namespace rsfcycle
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
       // the friction force acts at w: the residual below needs it
-      la::Vector w;
-      const auto e = scheme.new_velocity();
-      if (e[0] != 1 || e[1] != 0)
-        {
-          w = next.v;
-          next.v.sadd(e[0], e[1], old.v);
-        }
-      const la::Vector &w_or_v = (e[0] != 1 || e[1] != 0) ? w : next.v;
-      if (inertia)
-        {
-          const auto g = scheme.new_acceleration(tau);
-          next.a       = next.v;
-          next.a -= old.v;
-          next.a *= g[0];
-          next.a.add(g[1], old.a);
-        }
-      else
-        next.a.reinit(old.a);
-      const auto h = scheme.new_displacement();
-      next.u       = old.u;
-      next.u.add(h[0] * tau, old.v, h[1] * tau, next.v);
-      if (h[2] != 0 || h[3] != 0)
-        next.u.add(h[2] * tau * tau, old.a, h[3] * tau * tau, next.a);
+      const la::Vector w = next.v;
+      advance(old, w, tau, next);
+      const la::Vector &w_or_v = w;
 
       // Friction force per node from the equilibrium, r - A v (tangential).
       const auto        &nodes   = contact.contact_set().nodes;
@@ -331,6 +331,64 @@ namespace rsfcycle
           return false;
         }
       return true;
+    }
+
+
+    template <int dim>
+    void
+    ImplicitStep<dim>::advance(const BodyState  &old,
+                               const la::Vector &w,
+                               const double      tau,
+                               BodyState        &next) const
+    {
+      const auto e = scheme.new_velocity();
+      next.v       = w;
+      if (e[0] != 1 || e[1] != 0)
+        next.v.sadd(e[0], e[1], old.v);
+      if (inertia)
+        {
+          const auto g = scheme.new_acceleration(tau);
+          next.a       = next.v;
+          next.a -= old.v;
+          next.a *= g[0];
+          next.a.add(g[1], old.a);
+        }
+      else
+        next.a.reinit(old.a);
+      const auto h = scheme.new_displacement();
+      next.u       = old.u;
+      next.u.add(h[0] * tau, old.v, h[1] * tau, next.v);
+      if (h[2] != 0 || h[3] != 0)
+        next.u.add(h[2] * tau * tau, old.a, h[3] * tau * tau, next.a);
+    }
+
+
+    template <int dim>
+    bool
+    ImplicitStep<dim>::couple_normal_forces(
+      const BodyState                      &old,
+      const la::Vector                     &w,
+      const double                          tau,
+      std::vector<friction::NodePotential> &potentials,
+      std::vector<double>                  &stresses) const
+    {
+      BodyState end;
+      advance(old, w, tau, end);
+      const auto &rows  = discretisation.fault_normal_rows;
+      const auto &nodes = contact.contact_set().nodes;
+      stresses.resize(nodes.size());
+      bool compressed = true;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          // (one rank: the rows' global indices are local ones)
+          double force = contact.nodes()[k].normal_force;
+          for (const auto &[j, weight] : rows.at(nodes[k].dofs[0]))
+            force += weight * end.u.local_element(j);
+          potentials[k].normal_force = force;
+          stresses[k]                = force / contact.nodes()[k].weight;
+          compressed                 = compressed && force > 0;
+        }
+      return compressed;
     }
 
 

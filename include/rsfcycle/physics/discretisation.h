@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <functional>
+#include <map>
 #include <memory>
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
@@ -26,6 +27,33 @@ namespace rsfcycle
   namespace physics
   {
     using namespace dealii;
+
+    /**
+     * An observation (or a force) as a weighted sum of dofs: (global dof
+     * index, weight), hanging dofs replaced by the dofs they depend on.
+     */
+    using ObservationRow =
+      std::vector<std::pair<dealii::types::global_dof_index, double>>;
+
+    /**
+     * The pairs of a split fault's two sides (physics/split_fault.h) in the
+     * global dof numbering: per dof its physics::TieKind and its partner on
+     * the other side, and for every + tangential dof its node's + normal dof
+     * and the sign of the + side's outward normal along y. Empty without a
+     * split fault.
+     */
+    struct FaultTie
+    {
+      std::vector<unsigned char>                              kind;
+      std::vector<unsigned int>                               partner;
+      std::map<unsigned int, std::pair<unsigned int, double>> normal_of;
+
+      bool
+      empty() const
+      {
+        return kind.empty();
+      }
+    };
 
     /**
      * The discretisation of the Kelvin-Voigt body (MODEL.md §1-2): the
@@ -101,6 +129,17 @@ namespace rsfcycle
                     FEValues<dim>                     &fe_values,
                     std::array<FullMatrix<double>, 3> &matrices,
                     Vector<double>                    &cell_force) const;
+
+      /**
+       * With a split fault (Scene::split_fault()), on one rank: rewrite M, C,
+       * K, the loads, the fixed dofs and the backstop in the tied unknowns
+       * u = T u~ of physics/split_fault.h (the slip in the + tangential
+       * dof, the mean in the - one, one normal displacement), the radiation
+       * damping on the slip; fill fault_tie and fault_normal_rows. Throws
+       * std::invalid_argument on more than one rank.
+       */
+      void
+      tie_fault_sides();
 
       /**
        * The static equilibrium under gravity with the fixed dofs held at
@@ -215,6 +254,14 @@ namespace rsfcycle
        * equilibrium.
        */
       la::Vector prestress_force;
+      /** The split fault's tie (empty without one). */
+      FaultTie fault_tie;
+      /**
+       * With a split fault in plane strain: per + tangential dof (the
+       * contact dof), the compressive normal force on its node as a row of
+       * the tied unknowns [N/m^(3-dim)] (GlobalSystem::normal_rows).
+       */
+      std::map<unsigned int, ObservationRow> fault_normal_rows;
       /** CG iterations of the last gravity equilibrium. */
       unsigned int gravity_iterations = 0;
       /**

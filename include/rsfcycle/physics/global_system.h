@@ -13,12 +13,6 @@ namespace rsfcycle
 {
   namespace physics
   {
-    /**
-     * An observation as a weighted sum of dofs: (global dof index, weight),
-     * hanging dofs replaced by the dofs they depend on.
-     */
-    using ObservationRow =
-      std::vector<std::pair<dealii::types::global_dof_index, double>>;
 
     /**
      * The assembled elastic system of a Discretisation gathered onto every

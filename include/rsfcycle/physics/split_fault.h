@@ -52,6 +52,44 @@ namespace rsfcycle
     tie_split_fault(const Discretisation<dim> &discretisation,
                     GlobalSystem              &system);
 
+    /**
+     * The pairs of the two sides (FaultTie) of a discretisation with n dofs,
+     * found by position across the ranks; the refusals above.
+     */
+    template <int dim>
+    FaultTie
+    pair_fault_sides(const Discretisation<dim> &discretisation, unsigned int n);
+
+    /** A = T^T A T of a matrix in compressed rows, global numbering. */
+    void
+    tie_matrix(const FaultTie            &tie,
+               std::vector<std::size_t>  &row_start,
+               std::vector<unsigned int> &columns,
+               std::vector<double>       &values);
+
+    /**
+     * f~ = T^T f of nodal forces whose + tangential part is the shear
+     * prestress (the fault's internal traction, acting on both sides).
+     */
+    std::vector<double>
+    tie_force(const FaultTie &tie, const std::vector<double> &force);
+
+    /** A row of the untied dofs as a row of the tied unknowns. */
+    ObservationRow
+    tie_row(const FaultTie &tie, const ObservationRow &row);
+
+    /**
+     * Per contact dof a, the compressive normal force on its node as a row
+     * of the tied unknowns, -n (K u)_c of the untied stiffness's row c (the
+     * + side's cells alone); empty without a normal component.
+     */
+    std::vector<ObservationRow>
+    normal_force_rows(const FaultTie                  &tie,
+                      const std::vector<std::size_t>  &row_start,
+                      const std::vector<unsigned int> &columns,
+                      const std::vector<double>       &values,
+                      const std::vector<unsigned int> &contact_dofs);
+
     /** A dof's part in the tie of a split fault (GlobalSystem::tie_kind). */
     enum TieKind : unsigned char
     {
@@ -70,6 +108,14 @@ namespace rsfcycle
      */
     void
     untie_split_fault(const GlobalSystem &system, std::vector<double> &u);
+
+    /**
+     * The same for a vector of the volume method (one rank): u = T u~ on
+     * every paired dof; pairs of hanging dofs are left to
+     * hanging_constraints.distribute().
+     */
+    void
+    untie_split_fault(const FaultTie &tie, la::Vector &u);
   } // namespace physics
 } // namespace rsfcycle
 

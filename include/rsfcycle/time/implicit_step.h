@@ -135,6 +135,29 @@ namespace rsfcycle
                double                 tau,
                BodyState             &next);
 
+      /**
+       * v, a and u at the step's end from the unknown w at which friction
+       * acts (the scheme's new_velocity, new_acceleration, new_displacement).
+       */
+      void
+      advance(const BodyState  &old,
+              const la::Vector &w,
+              double            tau,
+              BodyState        &next) const;
+
+      /**
+       * A split fault's normal coupling (Discretisation::fault_normal_rows):
+       * the normal force of every contact node at the displacement of the
+       * step's end for w, w_k sigma_0 + n_k . u, into the potentials and
+       * (as stress) into `stresses`; false if a node is not in compression.
+       */
+      bool
+      couple_normal_forces(const BodyState                      &old,
+                           const la::Vector                     &w,
+                           double                                tau,
+                           std::vector<friction::NodePotential> &potentials,
+                           std::vector<double> &stresses) const;
+
       /** Where the first non-finite velocity is (for diagnoses). */
       std::string
       first_non_finite(const la::Vector &v) const;

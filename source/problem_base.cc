@@ -408,7 +408,12 @@ namespace rsfcycle
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
             const auto &p = nodes[k].params;
-            stresses.push_back(nodes[k].normal_force / nodes[k].weight *
+            // (a split fault: the normal stress changed by the slip)
+            const double normal_stress =
+              state.normal_stress.empty() ?
+                nodes[k].normal_force / nodes[k].weight :
+                state.normal_stress[k];
+            stresses.push_back(normal_stress *
                                  parameters.solver.law->friction_coefficient(
                                    p, state.alpha[k], rates[k]) +
                                (rates[k] > 0 ? p.cohesion : 0.));

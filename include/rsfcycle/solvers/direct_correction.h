@@ -16,9 +16,10 @@ namespace rsfcycle
      * are eliminated once per step matrix: CHOLMOD factorises A_II (a sparse
      * Cholesky factor, solvers/sparse_cholesky.h) and the
      * dense Schur complement S = A_cc - A_cI A_II^{-1} A_Ic of all contact
-     * dofs c is formed (with Z = A_II^{-1} A_Ic). Each TNNMG iteration then
-     * costs one sparse back-substitution and one dense solve with S_aa + H_aa
-     * on the active (non-truncated) contact dofs a. The factorisations of the
+     * dofs c is formed (with Z = A_II^{-1} A_Ic, not kept). Each TNNMG
+     * iteration then costs two sparse back-substitutions (before and after)
+     * and one dense solve with S_aa + H_aa on the active (non-truncated)
+     * contact dofs a. The factorisations of the
      * last few step matrices are cached by TruncatedNewtonSystem::matrix_key.
      * Meant for 2D and small 3D meshes (S is dense).
      */

@@ -10,8 +10,10 @@ set -euo pipefail
 run=$(realpath "$1"); span=$2; new=$(realpath "$3"); old=$(realpath "$4")
 work=$(mktemp -d)
 cp -r "$run" "$work/base"
-# the checkpoint's time: a resume to it writes nothing after it
+# the checkpoint's time: a resume with an End time before it cuts the
+# files to the checkpoint and steps no further
 cp -r "$work/base" "$work/probe"
+sed -i "s/^set End time .*/set End time = 1/" "$work/probe/parameters.prm"
 "$new" --resume "$work/probe" > /dev/null 2>&1 || true
 t0=$(tail -n 1 "$work/probe/time-series.csv" | cut -d, -f1)
 # (a run ends within 1e-10 t of End time: SPAN must exceed that)

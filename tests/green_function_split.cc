@@ -42,6 +42,7 @@
 // entered).
 // Printed: the event in years to 0.01, log10 of the peak to 0.01, the
 // displacement in mm to 0.1 (rounding moves the last digits of each).
+#include "bp1_mirror_models.h"
 #include "run_model.h"
 #include "tests.h"
 
@@ -167,48 +168,10 @@ namespace
   void
   compare(const std::string &displacement)
   {
-    const std::string source = SOURCE_DIR;
-    const bool        vector = displacement == "vector";
-    const std::string one_sided =
-      "set Displacement = " + displacement +
-      "\n"
-      "subsection Mesh file\n"
-      "  set File = " +
-      source +
-      "/../prm/meshes/seas-bp1.msh\n"
-      "  set Gravity = 0, 0\n"
-      "  set Observation points = fn+02: 2e3, 0; fn+08: 8e3, 0\n" +
-      (vector ? "  set Load velocity = 0, 1e-9\n"
-                "  set Contact normal = free\n"
-                "  set Boundary roles = 1: contact, 2: creep, 3: free, 4: "
-                "free, 5: load\n" :
-                "") +
-      "end\n";
-    const std::string material =
-      "density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear "
-      "viscosity 0, bulk viscosity 0";
-    const std::string two_sided =
-      "set Displacement = " + displacement +
-      "\n"
-      "subsection Mesh file\n"
-      "  set File = " +
-      source +
-      "/meshes/split-fault-2d.msh\n"
-      "  set Boundary roles = 1: contact, 2: creep, 3: free, 4: free, 5: "
-      "load, 11: fault-opposite, 12: fault-opposite, 13: free, 14: free, "
-      "15: load-opposite\n"
-      "  set Materials = 10: " +
-      material + "; 20: " + material +
-      "\n"
-      "  set Gravity = 0, 0\n"
-      "  set Load velocity = " +
-      (vector ? "0, 5e-10" : "5e-10") +
-      "\n"
-      "  set Observation points = fn+02: 2e3, 0; fn+08: 8e3, 0; fn-02: "
-      "-2e3, 0\n"
-      "end\n";
-    const Result one = run(one_sided, "output-one-sided-" + displacement);
-    const Result two = run(two_sided, "output-two-sided-" + displacement);
+    const std::string one_sided = bp1_one_sided(displacement);
+    const std::string two_sided = bp1_two_sided(displacement);
+    const Result      one = run(one_sided, "output-one-sided-" + displacement);
+    const Result      two = run(two_sided, "output-two-sided-" + displacement);
 
     dealii::deallog << displacement << std::endl;
     if (!compare_first_event(one, two, {7, 8}, 9))

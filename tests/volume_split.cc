@@ -4,7 +4,8 @@
 // (prm/seas-bp1-qd.prm with Solver/Bulk = volume, the direct linear
 // correction, implicit steps at tolerance 1e-6, TNNMG 1e-11) on 400 m fault
 // cells, gravity off, over the first 5e9 s (interseismic creep into the
-// locked patch, slip rates up to 1e-8 m/s).
+// locked patch; the largest slip rate 2.5e-9 m/s at the end).
+//  (the two models of tests/bp1_mirror_models.h)
 //  - one-sided: the body x >= 0 of prm/meshes/seas-bp1.msh with G/2 and
 //    rho/2 against a rigid mirror (the benchmark's reduction);
 //  - two-sided: tests/meshes/split-fault-2d.msh, the same body and its
@@ -29,6 +30,7 @@
 //    1e-6 relative and the surface displacement at 2 km within 1e-6.
 // Printed: the first step's displacement in um to 1e-6, the end's in mm
 // to 0.01, log10 V [m/s] to 0.001.
+#include "bp1_mirror_models.h"
 #include "run_model.h"
 #include "tests.h"
 
@@ -81,14 +83,6 @@ namespace
     return {read_csv(dir + "/time-series.csv")};
   }
 
-  std::string
-  fixed(const double x, const int digits)
-  {
-    std::ostringstream out;
-    out << std::fixed << std::setprecision(digits) << x;
-    return out.str();
-  }
-
   const char *
   yes(const bool condition)
   {
@@ -98,47 +92,9 @@ namespace
   void
   compare(const std::string &displacement)
   {
-    const std::string source = SOURCE_DIR;
-    const bool        vector = displacement == "vector";
-    const std::string one_sided =
-      "set Displacement = " + displacement +
-      "\n"
-      "subsection Mesh file\n"
-      "  set File = " +
-      source +
-      "/../prm/meshes/seas-bp1.msh\n"
-      "  set Gravity = 0, 0\n"
-      "  set Observation points = fn+02: 2e3, 0; fn+08: 8e3, 0\n" +
-      (vector ? "  set Load velocity = 0, 1e-9\n"
-                "  set Contact normal = free\n"
-                "  set Boundary roles = 1: contact, 2: creep, 3: free, 4: "
-                "free, 5: load\n" :
-                "") +
-      "end\n";
-    const std::string material =
-      "density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear "
-      "viscosity 0, bulk viscosity 0";
-    const std::string two_sided =
-      "set Displacement = " + displacement +
-      "\n"
-      "subsection Mesh file\n"
-      "  set File = " +
-      source +
-      "/meshes/split-fault-2d.msh\n"
-      "  set Boundary roles = 1: contact, 2: creep, 3: free, 4: free, 5: "
-      "load, 11: fault-opposite, 12: fault-opposite, 13: free, 14: free, "
-      "15: load-opposite\n"
-      "  set Materials = 10: " +
-      material + "; 20: " + material +
-      "\n"
-      "  set Gravity = 0, 0\n"
-      "  set Load velocity = " +
-      (vector ? "0, 5e-10" : "5e-10") +
-      "\n"
-      "  set Observation points = fn+02: 2e3, 0; fn+08: 8e3, 0; fn-02: "
-      "-2e3, 0\n"
-      "end\n";
-    const Result one =
+    const std::string one_sided = bp1_one_sided(displacement);
+    const std::string two_sided = bp1_two_sided(displacement);
+    const Result      one =
       run(one_sided, "output-volume-one-sided-" + displacement);
     const Result two =
       run(two_sided, "output-volume-two-sided-" + displacement);
@@ -152,8 +108,8 @@ namespace
       error = std::max(error, std::abs(2 * b[c] / a[c] - 1));
     dealii::deallog << "first step: the same in both: " << yes(a[0] == b[0])
                     << "; surface displacement at 2 km [um]: one-sided "
-                    << fixed(1e6 * a[7], 6) << ", 2 x two-sided "
-                    << fixed(2e6 * b[7], 6)
+                    << to_fixed(1e6 * a[7], 6) << ", 2 x two-sided "
+                    << to_fixed(2e6 * b[7], 6)
                     << "; at 2 and 8 km within 1e-8: " << yes(error < 1e-8)
                     << "; at -2 km the negative within 1e-9: "
                     << yes(std::abs(b[9] + b[7]) < 1e-9 * std::abs(b[7]))
@@ -163,13 +119,13 @@ namespace
                     << two.series.size() << ", the same: "
                     << yes(one.series.size() == two.series.size())
                     << "; log10 max V [m/s]: one-sided "
-                    << fixed(std::log10(ea[6]), 3) << ", two-sided "
-                    << fixed(std::log10(eb[6]), 3) << "; within 1e-6: "
+                    << to_fixed(std::log10(ea[6]), 3) << ", two-sided "
+                    << to_fixed(std::log10(eb[6]), 3) << "; within 1e-6: "
                     << yes(std::abs(eb[6] / ea[6] - 1) < 1e-6) << std::endl;
     dealii::deallog << "surface displacement at 2 km at the end [mm]: "
                        "one-sided "
-                    << fixed(1e3 * ea[7], 2) << ", 2 x two-sided "
-                    << fixed(2e3 * eb[7], 2) << "; within 1e-6: "
+                    << to_fixed(1e3 * ea[7], 2) << ", 2 x two-sided "
+                    << to_fixed(2e3 * eb[7], 2) << "; within 1e-6: "
                     << yes(std::abs(2 * eb[7] / ea[7] - 1) < 1e-6) << std::endl;
   }
 } // namespace

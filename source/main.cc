@@ -124,6 +124,8 @@ namespace
          "  seas-bp2-qd.prm       SEAS BP2-QD (BP1-QD with D_c = 4 mm)\n"
          "  seas-bp3-qd.prm       SEAS BP3-QD (60-degree thrust between two "
          "deformable sides)\n"
+         "  seas-bp3-fd.prm       SEAS BP3-FD (the same, fully dynamic; "
+         "volume method, one rank)\n"
          "  seas-bp4-qd.prm       SEAS BP4-QD (3D whole space, free rake)\n"
          "  seas-bp5-qd.prm       SEAS BP5-QD (3D half-space, free rake)\n"
          "  seas-bp6-qd-a.prm     SEAS BP6-QD-A (fluid injection, ageing law)\n"

@@ -365,14 +365,41 @@ namespace rsfcycle
     }
 
 
+    void
+    tie_prescribed(const FaultTie      &tie,
+                   std::vector<bool>   &fixed,
+                   std::vector<double> &values)
+    {
+      const std::vector<bool>   fix = fixed;
+      const std::vector<double> v   = values;
+      for (unsigned int a = 0; a < fix.size(); ++a)
+        {
+          const unsigned int b = tie.partner[a];
+          if (tie.kind[a] == tie_slip)
+            {
+              if (!fix[a] && fix[b])
+                throw std::invalid_argument(refused_opposite_load);
+              // creep: the two plates' difference, +v - (-v)
+              values[a] = fix[b] ? v[a] - v[b] : 2 * v[a];
+              values[b] = fix[b] ? 0.5 * (v[a] + v[b]) : 0.;
+            }
+          else if (tie.kind[a] == tie_normal)
+            {
+              fixed[a]  = fix[a] || fix[b];
+              values[a] = fix[a] ? v[a] : v[b];
+              fixed[b]  = true;
+              values[b] = 0;
+            }
+        }
+    }
+
+
     template <int dim>
     void
     tie_split_fault(const Discretisation<dim> &discretisation,
                     GlobalSystem              &system)
     {
-      FaultTie    tie     = pair_fault_sides(discretisation, system.n());
-      const auto  kind    = tie.kind;
-      const auto &partner = tie.partner;
+      FaultTie tie = pair_fault_sides(discretisation, system.n());
 
       // the normal force on each contact dof's node (+ side): the other
       // side's push against the outward normal n
@@ -388,32 +415,9 @@ namespace rsfcycle
         observation = tie_row(tie, observation);
 
       // the prescribed dofs in the new unknowns
-      std::vector<double> velocity = system.fixed_velocity;
-      std::vector<bool>   fixed    = system.fixed;
-      for (unsigned int a = 0; a < system.n(); ++a)
-        {
-          const unsigned int b   = partner[a];
-          const auto        &v   = system.fixed_velocity;
-          const auto        &fix = system.fixed;
-          if (kind[a] == tie_slip)
-            {
-              if (!fix[a] && fix[b])
-                throw std::invalid_argument(refused_opposite_load);
-              velocity[a] = fix[b] ? v[a] - v[b] : 2 * v[a];
-              velocity[b] = fix[b] ? 0.5 * (v[a] + v[b]) : 0.;
-            }
-          else if (kind[a] == tie_normal)
-            {
-              fixed[a]    = fix[a] || fix[b];
-              velocity[a] = fix[a] ? v[a] : v[b];
-              fixed[b]    = true;
-              velocity[b] = 0;
-            }
-        }
-      system.tie_kind       = std::move(tie.kind);
-      system.tie_partner    = std::move(tie.partner);
-      system.fixed          = std::move(fixed);
-      system.fixed_velocity = std::move(velocity);
+      tie_prescribed(tie, system.fixed, system.fixed_velocity);
+      system.tie_kind    = std::move(tie.kind);
+      system.tie_partner = std::move(tie.partner);
     }
 
 

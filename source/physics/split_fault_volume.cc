@@ -168,45 +168,17 @@ namespace rsfcycle
             force->local_element(i) = f[i];
         }
 
-      // the prescribed dofs: per dof its backstop sign (0: held at rest)
-      std::vector<double>       sign(n, 0.);
-      std::vector<unsigned int> component(n, 0);
+      // the prescribed dofs, with their backstop signs as the values (0:
+      // held at rest)
+      std::vector<double> sign(n, 0.);
       for (const auto &dof : backstop_dofs)
-        {
-          sign[dof.index]      = dof.sign;
-          component[dof.index] = dof.component;
-        }
-      std::vector<bool>   tied_fixed = fixed;
-      std::vector<double> tied_sign  = sign;
-      for (unsigned int a = 0; a < n; ++a)
-        {
-          const unsigned int b = tie.partner[a];
-          if (tie.kind[a] == tie_slip)
-            {
-              if (!fixed[a] && fixed[b])
-                throw std::invalid_argument(
-                  "Mesh file/Boundary roles: a fault-opposite node is "
-                  "prescribed (load-opposite) where its contact node is "
-                  "free; prescribe both sides or neither");
-              // creep: the two plates' difference, +v - (-v)
-              tied_sign[a] = fixed[b] ? sign[a] - sign[b] : 2 * sign[a];
-              tied_sign[b] = fixed[b] ? 0.5 * (sign[a] + sign[b]) : 0.;
-            }
-          else if (tie.kind[a] == tie_normal)
-            {
-              tied_fixed[a] = fixed[a] || fixed[b];
-              tied_sign[a]  = fixed[a] ? sign[a] : sign[b];
-              component[a]  = fixed[a] ? component[a] : component[b];
-              tied_fixed[b] = true;
-              tied_sign[b]  = 0;
-            }
-        }
-      fixed = tied_fixed;
+        sign[dof.index] = dof.sign;
+      tie_prescribed(tie, fixed, sign);
+      const std::vector<unsigned int> component = dof_components();
       backstop_dofs.clear();
       for (unsigned int i = 0; i < n; ++i)
-        if (fixed[i] && tied_sign[i] != 0 &&
-            !hanging_constraints.is_constrained(i))
-          backstop_dofs.push_back({i, component[i], tied_sign[i]});
+        if (fixed[i] && sign[i] != 0 && !hanging_constraints.is_constrained(i))
+          backstop_dofs.push_back({i, component[i], sign[i]});
     }
 
 

@@ -74,6 +74,20 @@ namespace rsfcycle
     std::vector<double>
     tie_force(const FaultTie &tie, const std::vector<double> &force);
 
+    /**
+     * The prescribed dofs (`fixed`) and their prescribed values (velocities,
+     * or factors of the load velocity) in the tied unknowns: a + tangential
+     * dof with a free partner prescribes the slip at twice its value (the
+     * plates' difference), with a prescribed one the difference and the
+     * mean; a prescribed normal on either side prescribes the shared one,
+     * the - normal is fixed at zero. Throws std::invalid_argument for a
+     * prescribed - dof whose + partner is free.
+     */
+    void
+    tie_prescribed(const FaultTie      &tie,
+                   std::vector<bool>   &fixed,
+                   std::vector<double> &values);
+
     /** A row of the untied dofs as a row of the tied unknowns. */
     ObservationRow
     tie_row(const FaultTie &tie, const ObservationRow &row);

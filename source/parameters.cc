@@ -360,8 +360,10 @@ namespace rsfcycle
                       "Linear correction of TNNMG: geometric multigrid on the "
                       "mesh levels (preconditioning CG on the truncated "
                       "system), direct (sparse Cholesky with a Schur "
-                      "complement on the contact), or amg (Trilinos ML, "
-                      "preconditioning CG)");
+                      "complement on the contact; one MPI rank), or amg "
+                      "(Trilinos ML, preconditioning CG). A split fault "
+                      "(Mesh file/Boundary roles: fault-opposite) needs "
+                      "direct or amg");
     prm.declare_entry("Direct fallback",
                       "false",
                       Bool(),

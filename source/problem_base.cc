@@ -384,7 +384,7 @@ namespace rsfcycle
   ProblemBase<dim>::layout() const
   {
     output::Layout layout = models::contact_layout(scene, contact);
-    layout.normal_stress  = !discretisation.fault_normal_rows.empty();
+    layout.normal_stress  = !discretisation.fault_tie.normal_of.empty();
     return layout;
   }
 
@@ -405,14 +405,20 @@ namespace rsfcycle
         // state, and log10 theta
         std::vector<double> stresses, log10_states;
         const auto         &nodes = contact.nodes();
+        // a split fault: the normal stress changed by the slip (a resumed
+        // state has none yet: from its displacement)
+        const bool split_normal = !discretisation.fault_tie.normal_of.empty();
+        std::vector<double> normal = state.normal_stress;
+        if (split_normal && Utilities::MPI::max(normal.empty() ? 0 : 1,
+                                                discretisation.triangulation
+                                                  .get_communicator()) == 0)
+          implicit_step->split_normal_stresses(state.u, normal);
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
-            const auto &p = nodes[k].params;
-            // (a split fault: the normal stress changed by the slip)
+            const auto  &p = nodes[k].params;
             const double normal_stress =
-              state.normal_stress.empty() ?
-                nodes[k].normal_force / nodes[k].weight :
-                state.normal_stress[k];
+              split_normal ? normal[k] :
+                             nodes[k].normal_force / nodes[k].weight;
             stresses.push_back(normal_stress *
                                  parameters.solver.law->friction_coefficient(
                                    p, state.alpha[k], rates[k]) +
@@ -424,8 +430,8 @@ namespace rsfcycle
           contact.gather(contact.tangential_displacement(state.v));
         sample.log10_states      = contact.gather(log10_states);
         sample.observation_rates = observed_uplift(state.v);
-        if (!state.normal_stress.empty())
-          sample.normal_stresses = contact.gather(state.normal_stress);
+        if (split_normal)
+          sample.normal_stresses = contact.gather(normal);
       }
     return sample;
   }

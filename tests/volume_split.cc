@@ -28,6 +28,10 @@
 //    1e-9 (the - side, from the mean and the slip);
 //  - at the end: the same number of steps, the largest slip rate within
 //    1e-6 relative and the surface displacement at 2 km within 1e-6.
+// On 2 ranks (volume_split.mpirun=2.output; the two sides' nodes of a pair
+// on different ranks): algebraic multigrid instead of the direct correction
+// (one rank only), to 5e7 s, the same checks but the steps' count (the
+// iterative solves' rounding moves the step sizes).
 // Printed: the first step's displacement in um to 1e-6, the end's in mm
 // to 0.01, log10 V [m/s] to 0.001.
 #include "bp1_mirror_models.h"
@@ -48,6 +52,17 @@ namespace
     std::vector<std::vector<double>> series;
   };
 
+  /**
+   * On one rank: the direct correction to 5e9 s; on more: algebraic
+   * multigrid (CG around 20 cycles) to 5e7 s (its step sizes follow the
+   * iterative solves' rounding, so the two models' steps may differ).
+   */
+  bool
+  on_ranks()
+  {
+    return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
+  }
+
   Result
   run(const std::string &settings, const std::string &dir)
   {
@@ -58,7 +73,9 @@ namespace
     prm.parse_input_from_string("set Output directory = " + dir +
                                 "\n"
                                 "set Overwrite output = true\n"
-                                "set End time = 5e9\n"
+                                "set End time = " +
+                                std::string(on_ranks() ? "5e7" : "5e9") +
+                                "\n"
                                 "subsection Mesh\n"
                                 "  set Local refinements = 2\n"
                                 "end\n"
@@ -67,8 +84,11 @@ namespace
                                 "  set Tolerance = 1e-6\n"
                                 "end\n"
                                 "subsection Solver\n"
-                                "  set Bulk = volume\n"
-                                "  set Linear correction = direct\n"
+                                "  set Bulk = volume\n" +
+                                (on_ranks() ?
+                                   "  set Linear correction = amg\n"
+                                   "  set Linear correction cycles = 20\n" :
+                                   "  set Linear correction = direct\n") +
                                 "  set TNNMG tolerance = 1e-11\n"
                                 "end\n"
                                 "subsection Output\n"
@@ -115,10 +135,12 @@ namespace
                     << yes(std::abs(b[9] + b[7]) < 1e-9 * std::abs(b[7]))
                     << std::endl;
     const auto &ea = one.series.back(), &eb = two.series.back();
-    dealii::deallog << "at the end: steps " << one.series.size() << " and "
-                    << two.series.size() << ", the same: "
-                    << yes(one.series.size() == two.series.size())
-                    << "; log10 max V [m/s]: one-sided "
+    dealii::deallog << "at the end: ";
+    if (!on_ranks())
+      dealii::deallog << "steps " << one.series.size() << " and "
+                      << two.series.size() << ", the same: "
+                      << yes(one.series.size() == two.series.size()) << "; ";
+    dealii::deallog << "log10 max V [m/s]: one-sided "
                     << to_fixed(std::log10(ea[6]), 3) << ", two-sided "
                     << to_fixed(std::log10(eb[6]), 3) << "; within 1e-6: "
                     << yes(std::abs(eb[6] / ea[6] - 1) < 1e-6) << std::endl;

@@ -15,6 +15,14 @@
 //  - the slip rate at dp100 and dp200 within 1e-4 (log10 within 4e-5);
 //  - the surface displacement at +-8 km (two components) within 1e-5
 //    relative.
+// On 2 ranks (volume_split_normal.mpirun=2.output; the pairs' two nodes
+// on different ranks, the normal rows reading ghosts): the volume method
+// with algebraic multigrid (the direct correction runs on one rank; on
+// BP3's domain it needs 60-80 CG iterations a step), to 3e7 s (132 steps,
+// normal stress changes of 0.03 MPa), the same checks but the surface
+// displacements within 5e-5 (at 3e7 s the two methods' first steps still
+// show: 1.1e-5 apart on one rank with the direct correction too; the
+// 2-rank volume run is within 7e-7 of the 1-rank one).
 // Printed: the normal stress changes [MPa] to 1e-3, log10 V to 1e-3, the
 // displacements [m] to 1e-4.
 #include "run_model.h"
@@ -33,6 +41,13 @@ namespace
     return ok ? "yes" : "no";
   }
 
+  /** On more than one rank the volume method uses algebraic multigrid. */
+  bool
+  on_ranks()
+  {
+    return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
+  }
+
   void
   run(const std::string &bulk, const std::string &dir)
   {
@@ -43,7 +58,9 @@ namespace
     prm.parse_input_from_string("set Output directory = " + dir +
                                 "\n"
                                 "set Overwrite output = true\n"
-                                "set End time = 3e9\n"
+                                "set End time = " +
+                                std::string(on_ranks() ? "3e7" : "3e9") +
+                                "\n"
                                 "subsection Mesh file\n"
                                 "  set File = " +
                                 source +
@@ -59,7 +76,11 @@ namespace
                                 "  set Bulk = " +
                                 bulk +
                                 "\n"
-                                "  set Linear correction = direct\n"
+                                "  set Linear correction = " +
+                                (bulk == "volume" && on_ranks() ?
+                                   "amg\n  set Linear correction cycles = 20" :
+                                   "direct") +
+                                "\n"
                                 "  set TNNMG tolerance = 1e-10\n"
                                 "end\n"
                                 "subsection Output\n"
@@ -90,7 +111,7 @@ main(int argc, char **argv)
   initlog(6);
   run("volume", "bp3-volume");
   run("green-function", "bp3-green");
-  const double t = 3e9;
+  const double t = on_ranks() ? 3e7 : 3e9;
   // fltst: t slip slip_rate shear_stress normal_stress state
   const auto station = [&](const std::string &dir, const std::string &dp) {
     return dir + "/fltst_dp" + dp;
@@ -124,8 +145,9 @@ main(int argc, char **argv)
         dealii::deallog << "fn" << fn << " displacement " << c
                         << " [m]: volume " << to_fixed(v, 4)
                         << ", Green's functions " << to_fixed(g, 4)
-                        << "; within 1e-5: "
-                        << yes(std::abs(v - g) < 1e-5 * std::abs(g))
+                        << "; within " << (on_ranks() ? "5e-5" : "1e-5") << ": "
+                        << yes(std::abs(v - g) <
+                               (on_ranks() ? 5e-5 : 1e-5) * std::abs(g))
                         << std::endl;
       }
   return 0;

@@ -438,15 +438,22 @@ namespace rsfcycle
     void
     untie_split_fault(const FaultTie &tie, la::Vector &u)
     {
-      // (one rank: local and global numbering agree)
-      const la::Vector tied = u;
-      for (unsigned int j = 0; j < tie.kind.size(); ++j)
+      // the rank's dofs; a partner on another rank is a ghost
+      // (Discretisation::tie_fault_sides())
+      u.update_ghost_values();
+      const la::Vector tied        = u;
+      const auto      &partitioner = *u.get_partitioner();
+      for (unsigned int l = 0; l < partitioner.locally_owned_size(); ++l)
         {
+          const auto j = partitioner.local_to_global(l);
+          if (tie.kind[j] == tie_none)
+            continue;
           double value = 0;
-          for (const auto &[l, t_jl] : forward_terms(tie, j))
-            value += t_jl * tied.local_element(l);
-          u.local_element(j) = value;
+          for (const auto &[k, t_jk] : forward_terms(tie, j))
+            value += t_jk * tied.local_element(partitioner.global_to_local(k));
+          u.local_element(l) = value;
         }
+      u.update_ghost_values();
     }
 
 

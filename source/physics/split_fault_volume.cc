@@ -1,6 +1,7 @@
 // The two sides of a split fault tied in the volume method's matrices
 // (Discretisation::tie_fault_sides, physics/split_fault.h).
 #include <algorithm>
+#include <array>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <rsfcycle/ids.h>
@@ -14,7 +15,10 @@ namespace rsfcycle
   {
     namespace
     {
-      /** A matrix in compressed rows, global numbering. */
+      /**
+       * A matrix in compressed rows, global numbering: the rank's rows and
+       * the rows of every paired dof (their tie reads the partner's row).
+       */
       struct Rows
       {
         std::vector<std::size_t>  start;
@@ -23,15 +27,28 @@ namespace rsfcycle
       };
 
       Rows
-      rows_of(const TrilinosWrappers::SparseMatrix &A, const unsigned int n)
+      rows_of(const TrilinosWrappers::SparseMatrix &A,
+              const FaultTie                       &tie,
+              const IndexSet                       &owned,
+              const MPI_Comm                        communicator)
       {
+        const unsigned int n = tie.kind.size();
         std::vector<std::vector<std::pair<unsigned int, double>>> entries(n);
-        la::for_each_entry(A,
-                           [&](const types::global_dof_index row,
-                               const types::global_dof_index column,
-                               const double                  value) {
-                             entries[row].emplace_back(column, value);
-                           });
+        std::vector<std::array<double, 3>>                        paired;
+        la::for_each_entry(
+          A,
+          [&](const types::global_dof_index row,
+              const types::global_dof_index column,
+              const double                  value) {
+            entries[row].emplace_back(column, value);
+            if (tie.kind[row] != tie_none)
+              paired.push_back({{double(row), double(column), value}});
+          });
+        for (const auto &[row, column, value] :
+             la::all_gather(communicator, paired))
+          if (!owned.is_element(static_cast<unsigned int>(row)))
+            entries[static_cast<unsigned int>(row)].emplace_back(
+              static_cast<unsigned int>(column), value);
         Rows rows;
         rows.start.push_back(0);
         for (auto &row : entries)
@@ -47,7 +64,7 @@ namespace rsfcycle
         return rows;
       }
 
-      /** A rebuilt on the (wider) pattern of `rows`. */
+      /** A rebuilt from the rank's rows of `rows` (a wider pattern). */
       void
       assign(TrilinosWrappers::SparseMatrix &A,
              const Rows                     &rows,
@@ -55,12 +72,12 @@ namespace rsfcycle
              const MPI_Comm                  communicator)
       {
         const unsigned int     n = rows.start.size() - 1;
-        DynamicSparsityPattern pattern(n, n);
-        for (unsigned int i = 0; i < n; ++i)
+        DynamicSparsityPattern pattern(n, n, owned);
+        for (const auto i : owned)
           for (std::size_t e = rows.start[i]; e < rows.start[i + 1]; ++e)
             pattern.add(i, rows.columns[e]);
         A.reinit(owned, owned, pattern, communicator);
-        for (unsigned int i = 0; i < n; ++i)
+        for (const auto i : owned)
           for (std::size_t e = rows.start[i]; e < rows.start[i + 1]; ++e)
             A.set(i, rows.columns[e], rows.values[e]);
         A.compress(VectorOperation::insert);
@@ -74,6 +91,29 @@ namespace rsfcycle
             return e;
         throw std::logic_error("split fault: a diagonal entry is missing");
       }
+
+      /**
+       * A vector's values by global index: the rank's own and those of
+       * every paired dof (zero elsewhere).
+       */
+      std::vector<double>
+      paired_values(const la::Vector &v, const FaultTie &tie)
+      {
+        const auto                        &partitioner = *v.get_partitioner();
+        std::vector<double>                values(tie.kind.size(), 0.);
+        std::vector<std::array<double, 2>> paired;
+        for (unsigned int l = 0; l < partitioner.locally_owned_size(); ++l)
+          {
+            const auto i = partitioner.local_to_global(l);
+            values[i]    = v.local_element(l);
+            if (tie.kind[i] != tie_none)
+              paired.push_back({{double(i), values[i]}});
+          }
+        for (const auto &[i, value] :
+             la::all_gather(partitioner.get_mpi_communicator(), paired))
+          values[static_cast<unsigned int>(i)] = value;
+        return values;
+      }
     } // namespace
 
 
@@ -81,15 +121,11 @@ namespace rsfcycle
     void
     Discretisation<dim>::tie_fault_sides()
     {
-      const MPI_Comm communicator = triangulation.get_communicator();
-      if (Utilities::MPI::n_mpi_processes(communicator) > 1)
-        throw std::invalid_argument(
-          "Mesh file/Boundary roles: fault-opposite with Solver/Bulk = volume "
-          "runs on one MPI rank (the tie of the two sides is not distributed "
-          "yet); run it with one rank or with Bulk = green-function");
-      const unsigned int n = dof_handler.n_dofs();
-      fault_tie            = pair_fault_sides(*this, n);
-      const FaultTie &tie  = fault_tie;
+      const MPI_Comm     communicator = triangulation.get_communicator();
+      const unsigned int n            = dof_handler.n_dofs();
+      const IndexSet    &owned        = dof_handler.locally_owned_dofs();
+      fault_tie                       = pair_fault_sides(*this, n);
+      const FaultTie &tie             = fault_tie;
 
       // The radiation damping eta w_i of the + side's tangential contact
       // dofs (quasi-dynamic) damps the slip rate: taken off C's diagonal
@@ -118,67 +154,122 @@ namespace rsfcycle
               }
           damping.compress(VectorOperation::add);
         }
+      // (by global index: the rank's and the paired dofs', whose rows the
+      // tie reads)
+      const std::vector<double> damping_of = paired_values(damping, tie);
 
-      const IndexSet &owned = dof_handler.locally_owned_dofs();
-      for (const auto &[matrix, local] :
-           {std::make_pair(&mass_matrix, &mass_local),
-            std::make_pair(&viscosity_matrix, &viscosity_local),
-            std::make_pair(&stiffness_matrix, &stiffness_local)})
+      // T^T A T of M, C and K in the rank's rows; the normal force rows of
+      // the rank's contact dofs from K's
+      std::array<Rows, 3>                                   tied;
+      const std::array<TrilinosWrappers::SparseMatrix *, 3> matrices = {
+        {&mass_matrix, &viscosity_matrix, &stiffness_matrix}};
+      for (unsigned int m = 0; m < 3; ++m)
         {
-          Rows rows = rows_of(*matrix, n);
-          if (matrix == &stiffness_matrix)
+          Rows &rows = tied[m];
+          rows       = rows_of(*matrices[m], tie, owned, communicator);
+          if (matrices[m] == &stiffness_matrix)
             {
               std::vector<unsigned int> contact_dofs;
               for (const auto &[a, normal] : tie.normal_of)
-                contact_dofs.push_back(a);
+                if (owned.is_element(a))
+                  contact_dofs.push_back(a);
               const auto normal_rows = normal_force_rows(
                 tie, rows.start, rows.columns, rows.values, contact_dofs);
               fault_normal_rows.clear();
               for (unsigned int k = 0; k < normal_rows.size(); ++k)
                 fault_normal_rows[contact_dofs[k]] = normal_rows[k];
             }
-          const bool viscosity = matrix == &viscosity_matrix;
+          const bool viscosity = matrices[m] == &viscosity_matrix;
           if (viscosity)
             for (unsigned int i = 0; i < n; ++i)
-              rows.values[find_entry(rows, i, i)] -= damping.local_element(i);
+              if (damping_of[i] != 0)
+                rows.values[find_entry(rows, i, i)] -= damping_of[i];
           tie_matrix(tie, rows.start, rows.columns, rows.values);
           if (viscosity)
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                // the damping of a + dof moves to the slip; a hanging
-                // contact dof keeps its own (its pair is left untied)
-                const unsigned int s =
-                  tie.kind[i] == tie_mean ? tie.partner[i] : i;
-                if (tie.kind[i] != tie_mean && tie.kind[i] != tie_gone)
-                  rows.values[find_entry(rows, s, s)] +=
-                    damping.local_element(i);
-              }
-          assign(*matrix, rows, owned, communicator);
-          local->initialize(*matrix, partitioner);
+            for (const auto i : owned)
+              // the damping of a + dof stays with the slip in its place; a
+              // hanging contact dof keeps its own (its pair is left untied)
+              if (tie.kind[i] != tie_mean && tie.kind[i] != tie_gone)
+                rows.values[find_entry(rows, i, i)] += damping_of[i];
         }
 
-      // the loads
-      for (la::Vector *force : {&body_force, &prestress_force})
-        {
-          std::vector<double> f(n);
-          for (unsigned int i = 0; i < n; ++i)
-            f[i] = force->local_element(i);
-          f = tie_force(tie, f);
-          for (unsigned int i = 0; i < n; ++i)
-            force->local_element(i) = f[i];
-        }
-
-      // the prescribed dofs, with their backstop signs as the values (0:
-      // held at rest)
-      std::vector<double> sign(n, 0.);
+      // the loads and the prescribed dofs (with their backstop signs as the
+      // values, 0: held at rest) by global index, the paired ones of every
+      // rank included
+      std::array<std::vector<double>, 2> loads = {
+        {tie_force(tie, paired_values(body_force, tie)),
+         tie_force(tie, paired_values(prestress_force, tie))}};
+      la::Vector flags;
+      reinit(flags);
+      for (unsigned int l = 0; l < partitioner->locally_owned_size(); ++l)
+        flags.local_element(l) = fixed[l] ? 1. : 0.;
+      std::vector<double> fixed_value = paired_values(flags, tie);
+      flags                           = 0;
       for (const auto &dof : backstop_dofs)
-        sign[dof.index] = dof.sign;
-      tie_prescribed(tie, fixed, sign);
+        flags.local_element(dof.index) = dof.sign;
+      std::vector<double> sign = paired_values(flags, tie);
+      std::vector<bool>   is_fixed(n);
+      for (unsigned int i = 0; i < n; ++i)
+        is_fixed[i] = fixed_value[i] != 0;
+      tie_prescribed(tie, is_fixed, sign);
+
+      // The vectors' ghosts: as before, every column of the tied rows and
+      // the partners of the relevant dofs (the untie reads them).
+      IndexSet ghosts = partitioner->ghost_indices();
+      {
+        std::vector<types::global_dof_index> columns;
+        for (const auto &rows : tied)
+          for (const auto i : owned)
+            for (std::size_t e = rows.start[i]; e < rows.start[i + 1]; ++e)
+              columns.push_back(rows.columns[e]);
+        for (const IndexSet *set : {&owned, &partitioner->ghost_indices()})
+          for (const auto i : *set)
+            if (tie.kind[i] != tie_none)
+              columns.push_back(tie.partner[i]);
+        std::sort(columns.begin(), columns.end());
+        columns.erase(std::unique(columns.begin(), columns.end()),
+                      columns.end());
+        ghosts.add_indices(columns.begin(), columns.end());
+        ghosts.subtract_set(owned);
+      }
+      partitioner = std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                                  ghosts,
+                                                                  communicator);
+      step_matrices.clear();
+      const std::array<la::LocalMatrix *, 3> locals = {
+        {&mass_local, &viscosity_local, &stiffness_local}};
+      for (unsigned int m = 0; m < 3; ++m)
+        {
+          assign(*matrices[m], tied[m], owned, communicator);
+          locals[m]->initialize(*matrices[m], partitioner);
+        }
+      for (unsigned int f = 0; f < 2; ++f)
+        {
+          la::Vector &force = f == 0 ? body_force : prestress_force;
+          reinit(force);
+          for (unsigned int l = 0; l < partitioner->locally_owned_size(); ++l)
+            force.local_element(l) = loads[f][partitioner->local_to_global(l)];
+        }
+
+      // fixed by the new local index (ghosts from their owners), the
+      // backstop from the rank's dofs
+      reinit(flags);
       const std::vector<unsigned int> component = dof_components();
       backstop_dofs.clear();
-      for (unsigned int i = 0; i < n; ++i)
-        if (fixed[i] && sign[i] != 0 && !hanging_constraints.is_constrained(i))
-          backstop_dofs.push_back({i, component[i], sign[i]});
+      for (unsigned int l = 0; l < partitioner->locally_owned_size(); ++l)
+        {
+          const auto i           = partitioner->local_to_global(l);
+          flags.local_element(l) = is_fixed[i] ? 1. : 0.;
+          if (is_fixed[i] && sign[i] != 0 &&
+              !hanging_constraints.is_constrained(i))
+            backstop_dofs.push_back({l, component[l], sign[i]});
+        }
+      flags.update_ghost_values();
+      fixed.assign(partitioner->locally_owned_size() +
+                     partitioner->n_ghost_indices(),
+                   false);
+      for (unsigned int l = 0; l < fixed.size(); ++l)
+        fixed[l] = flags.local_element(l) != 0;
     }
 
 

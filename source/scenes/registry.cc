@@ -74,13 +74,13 @@ namespace rsfcycle
           if (green_function())
             models::GreenFault<dim>::check(parameters, *scene);
           else if (scene->split_fault() &&
-                   parameters.solver.linear_correction !=
-                     SolverParameters::LinearCorrection::direct)
+                   parameters.solver.linear_correction ==
+                     SolverParameters::LinearCorrection::multigrid)
             throw std::invalid_argument(
               "Solver/Linear correction: a fault-opposite side (Mesh "
-              "file/Boundary roles) in the volume method needs direct (the "
-              "multigrid levels and algebraic multigrid do not tie the two "
-              "sides yet)");
+              "file/Boundary roles) in the volume method needs direct (one "
+              "rank) or amg (the geometric multigrid's levels do not tie the "
+              "two sides yet)");
           else if (scene->split_fault() && scene->gravity().norm() != 0)
             throw std::invalid_argument(
               "Mesh file/Gravity: a fault-opposite side (Boundary roles) "

@@ -116,7 +116,7 @@ namespace rsfcycle
       // displacement of the step's end, updated with the state in the fixed
       // point (the spatial problem for fixed normal forces stays convex); a
       // node without compression fails the step.
-      const bool normal_coupling = !discretisation.fault_normal_rows.empty();
+      const bool normal_coupling = !discretisation.fault_tie.normal_of.empty();
       bool       compressed      = true;
       if (normal_coupling)
         compressed = couple_normal_forces(
@@ -374,21 +374,36 @@ namespace rsfcycle
     {
       BodyState end;
       advance(old, w, tau, end);
+      const bool compressed = split_normal_stresses(end.u, stresses);
+      for (unsigned int k = 0; k < stresses.size(); ++k)
+        potentials[k].normal_force = stresses[k] * contact.nodes()[k].weight;
+      return compressed;
+    }
+
+
+    template <int dim>
+    bool
+    ImplicitStep<dim>::split_normal_stresses(
+      const la::Vector    &u,
+      std::vector<double> &stresses) const
+    {
+      u.update_ghost_values();
       const auto &rows  = discretisation.fault_normal_rows;
       const auto &nodes = contact.contact_set().nodes;
       stresses.resize(nodes.size());
       bool compressed = true;
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
-          // (one rank: the rows' global indices are local ones)
           double force = contact.nodes()[k].normal_force;
-          for (const auto &[j, weight] : rows.at(nodes[k].dofs[0]))
-            force += weight * end.u.local_element(j);
-          potentials[k].normal_force = force;
-          stresses[k]                = force / contact.nodes()[k].weight;
-          compressed                 = compressed && force > 0;
+          for (const auto &[j, weight] :
+               rows.at(u.get_partitioner()->local_to_global(nodes[k].dofs[0])))
+            force += weight * u.local_element(discretisation.local_index(j));
+          stresses[k] = force / contact.nodes()[k].weight;
+          compressed  = compressed && force > 0;
         }
-      return compressed;
+      return dealii::Utilities::MPI::min(
+               compressed ? 1 : 0,
+               discretisation.triangulation.get_communicator()) == 1;
     }
 
 

@@ -8,8 +8,9 @@
 # checkpoint holds everything the time loop carries. Also checks that
 # SIGINT stops a run with exit code 130 and a resumable folder. The same
 # for the spring-slider, which runs through the same simulator,
-# with step doubling and with local extrapolation, and for SEAS BP1-QD with
-# Solver/Bulk = green-function (the Runge-Kutta on the fault).
+# with step doubling and with local extrapolation, for SEAS BP1-QD with
+# Solver/Bulk = green-function (the Runge-Kutta on the fault), and for SEAS
+# BP3-QD's split fault in the volume method (its normal stress output).
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -89,6 +90,34 @@ subsection Output
 end
 PRM
 }
+# SEAS BP3-QD at 60 degrees on 200 m cells in the volume method: a fault
+# between two deformable sides, whose SEAS files carry the normal stress
+# changed by the slip (not in the checkpoint: the resumed state's is made
+# from its displacement, and must come out as the run's)
+make_split_prm() {
+  cat > "$1.prm" <<PRM
+include $src/prm/seas-bp3-qd.prm
+set End time = 1e9
+set Output directory = $1
+subsection Mesh file
+  set File = $src/prm/meshes/seas-bp3-60.msh
+end
+subsection Mesh
+  set Local refinements = 2
+end
+subsection Solver
+  set Bulk = volume
+  set Linear correction = direct
+end
+subsection Time stepping
+  set Integrator = implicit
+end
+subsection Output
+  set Checkpoint steps = 40
+  set Write VTU = false
+end
+PRM
+}
 fail() { echo "FAILED: $*"; exit 1; }
 # start run $1 in the background (pid in $pid) and wait until it has
 # written a checkpoint and 120 rows
@@ -144,3 +173,4 @@ check_resume wedge make_wedge_prm
 check_resume slider make_slider_prm
 check_resume slider-local-extrapolation make_slider_le_prm
 check_resume green-function make_green_prm
+check_resume split-volume make_split_prm

@@ -131,12 +131,15 @@ namespace rsfcycle
                     Vector<double>                    &cell_force) const;
 
       /**
-       * With a split fault (Scene::split_fault()), on one rank: rewrite M, C,
-       * K, the loads, the fixed dofs and the backstop in the tied unknowns
+       * With a split fault (Scene::split_fault()): rewrite M, C, K, the
+       * loads, the fixed dofs and the backstop in the tied unknowns
        * u = T u~ of physics/split_fault.h (the slip in the + tangential
        * dof, the mean in the - one, one normal displacement), the radiation
-       * damping on the slip; fill fault_tie and fault_normal_rows. Throws
-       * std::invalid_argument on more than one rank.
+       * damping on the slip; fill fault_tie and fault_normal_rows (the
+       * rank's contact dofs). On N ranks the rows of the paired dofs are
+       * gathered on every rank, and the partitioner is rebuilt: its ghosts
+       * gain the columns of the tied rows and the partners of the relevant
+       * dofs (vectors made before must be made again).
        */
       void
       tie_fault_sides();
@@ -258,8 +261,9 @@ namespace rsfcycle
       FaultTie fault_tie;
       /**
        * With a split fault in plane strain: per + tangential dof (the
-       * contact dof), the compressive normal force on its node as a row of
-       * the tied unknowns [N/m^(3-dim)] (GlobalSystem::normal_rows).
+       * contact dof) of this rank, by global index, the compressive normal
+       * force on its node as a row of the tied unknowns (global indices)
+       * [N/m^(3-dim)] (GlobalSystem::normal_rows).
        */
       std::map<unsigned int, ObservationRow> fault_normal_rows;
       /** CG iterations of the last gravity equilibrium. */

@@ -124,8 +124,9 @@ namespace rsfcycle
     untie_split_fault(const GlobalSystem &system, std::vector<double> &u);
 
     /**
-     * The same for a vector of the volume method (one rank): u = T u~ on
-     * every paired dof; pairs of hanging dofs are left to
+     * The same for a vector of the volume method: u = T u~ on the rank's
+     * paired dofs (partners on other ranks read as ghosts), then the ghosts
+     * updated; pairs of hanging dofs are left to
      * hanging_constraints.distribute().
      */
     void

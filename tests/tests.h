@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -69,6 +70,13 @@ read_seas(const std::string &file)
 }
 
 /** x with `digits` digits after the point (a rounded digest value). */
+/** Whether the test runs on more than one MPI rank (NAME.mpirun=N). */
+inline bool
+on_ranks()
+{
+  return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
+}
+
 inline std::string
 to_fixed(const double x, const int digits)
 {

@@ -52,17 +52,6 @@ namespace
     std::vector<std::vector<double>> series;
   };
 
-  /**
-   * On one rank: the direct correction to 5e9 s; on more: algebraic
-   * multigrid (CG around 20 cycles) to 5e7 s (its step sizes follow the
-   * iterative solves' rounding, so the two models' steps may differ).
-   */
-  bool
-  on_ranks()
-  {
-    return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
-  }
-
   Result
   run(const std::string &settings, const std::string &dir)
   {

@@ -41,13 +41,6 @@ namespace
     return ok ? "yes" : "no";
   }
 
-  /** On more than one rank the volume method uses algebraic multigrid. */
-  bool
-  on_ranks()
-  {
-    return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
-  }
-
   void
   run(const std::string &bulk, const std::string &dir)
   {

@@ -4,6 +4,7 @@
 #include <array>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <map>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/split_fault.h>
@@ -243,6 +244,16 @@ namespace rsfcycle
           assign(*matrices[m], tied[m], owned, communicator);
           locals[m]->initialize(*matrices[m], partitioner);
         }
+      // the normal rows in local indices of the new partitioner (read in
+      // every fixed-point iteration)
+      std::map<unsigned int, ObservationRow> normal_rows;
+      for (auto &[a, row] : fault_normal_rows)
+        {
+          for (auto &[j, weight] : row)
+            j = local_index(j);
+          normal_rows[local_index(a)] = std::move(row);
+        }
+      fault_normal_rows = std::move(normal_rows);
       for (unsigned int f = 0; f < 2; ++f)
         {
           la::Vector &force = f == 0 ? body_force : prestress_force;

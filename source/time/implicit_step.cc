@@ -395,9 +395,8 @@ namespace rsfcycle
       for (unsigned int k = 0; k < nodes.size(); ++k)
         {
           double force = contact.nodes()[k].normal_force;
-          for (const auto &[j, weight] :
-               rows.at(u.get_partitioner()->local_to_global(nodes[k].dofs[0])))
-            force += weight * u.local_element(discretisation.local_index(j));
+          for (const auto &[j, weight] : rows.at(nodes[k].dofs[0]))
+            force += weight * u.local_element(j);
           stresses[k] = force / contact.nodes()[k].weight;
           compressed  = compressed && force > 0;
         }

@@ -261,9 +261,9 @@ namespace rsfcycle
       FaultTie fault_tie;
       /**
        * With a split fault in plane strain: per + tangential dof (the
-       * contact dof) of this rank, by global index, the compressive normal
-       * force on its node as a row of the tied unknowns (global indices)
-       * [N/m^(3-dim)] (GlobalSystem::normal_rows).
+       * contact dof) of this rank, by local index, the compressive normal
+       * force on its node as a row of the tied unknowns (local indices:
+       * owned, then ghosts) [N/m^(3-dim)] (GlobalSystem::normal_rows).
        */
       std::map<unsigned int, ObservationRow> fault_normal_rows;
       /** CG iterations of the last gravity equilibrium. */

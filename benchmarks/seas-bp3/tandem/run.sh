@@ -1,0 +1,51 @@
+#!/bin/bash
+# Third code for SEAS BP3-QD: tandem (github.com/TEAR-ERC/tandem;
+# discontinuous Galerkin, finite box, discrete Green's functions).
+#
+# usage: benchmarks/seas-bp3/tandem/run.sh OUTDIR
+#   LF     fault element size in km (default 0.1: degree-4 elements, so 5
+#          nodes per 100 m of fault; tandem's own default is 0.02)
+#   DIP    30, 60 (default) or 90
+#   SENSE  thrust (default) or normal
+#   RTOL   the Runge-Kutta's tolerance, -ts_atol of tandem's rk45.cfg
+#          (default 1e-7, as that file; it is absolute on slip and state)
+#   TMAX   end time in years of 365 days (default 1500)
+#   NICE   nice level (default 10)
+#   PEERS  where build.sh put tandem (default /work/peers)
+# Builds tandem if absent (build.sh), meshes tandem's bp3.geo with gmsh,
+# writes OUTDIR/bp3.toml (tandem_input.py), runs it on one rank with
+# MUMPS's LDL^T factorisation (tandem flags its SIPG matrix symmetric; PORD
+# ordering: 520 M entries at LF = 0.1, half of LU's, 1.2 s per Green's
+# function on this machine) and RK45 (Dormand-Prince), and converts the output
+# (tandem2seas.py) to global.dat, fltst_dpXXX(.dat) and srfst_fn±08 /
+# srfst_x±08.dat, the files compare.py reads for rsfcycle and HBI.
+set -euo pipefail
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+PY=/usr/bin/python3
+LF=${LF:-0.1}
+DIP=${DIP:-60}
+SENSE=${SENSE:-thrust}
+RTOL=${RTOL:-1e-7}
+TMAX=${TMAX:-1500}
+NICE=${NICE:-10}
+PEERS=${PEERS:-/work/peers}
+OUT=${1:?usage: $0 OUTDIR}
+BIN=$PEERS/tandem/build/app/tandem
+[ -x "$BIN" ] || "$HERE/build.sh" "$PEERS"
+SRC=$PEERS/tandem/src/examples/tandem/2d
+
+mkdir -p "$OUT"
+cp "$SRC/bp3.lua" "$SRC/bp3.geo" "$OUT/"
+MESH=bp3-d$DIP-Lf$LF.msh
+(cd "$OUT" && gmsh -2 -setnumber Lf "$LF" -setnumber Ls "$LF" -setnumber dip "$DIP" bp3.geo \
+   -o "$MESH" > gmsh.log 2>&1)
+$PY "$HERE/tandem_input.py" "$OUT" --dip "$DIP" --sense "$SENSE" --mesh "$MESH" \
+  --final-time "$($PY -c "print($TMAX * 3.1536e7)")" > /dev/null
+echo "== BP3-QD (dip $DIP, $SENSE): tandem $(git -C "$PEERS/tandem/src" rev-parse --short HEAD), Lf $LF km, degree 4, RK atol $RTOL, $TMAX yr -> $OUT"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
+export LD_LIBRARY_PATH=$PEERS/tandem-deps/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}  # GKlib, METIS, ParMETIS
+( cd "$OUT" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.toml --petsc \
+    -ksp_type preonly -pc_type cholesky -pc_factor_mat_solver_type mumps -mat_mumps_icntl_7 4 \
+    -ts_type rk -ts_rk_type 5dp -ts_rtol 1e-50 -ts_atol "$RTOL" -ts_adapt_wnormtype infinity \
+    > log.txt 2>&1 )
+$PY "$HERE/tandem2seas.py" "$OUT"

@@ -67,16 +67,22 @@ def value_at(table, t, column):
     return float(np.interp(t, table[:, 0], table[:, column]))
 
 
+def pop_until(args):
+    """Removes `--until YEARS` from args; the time in s (inf without it)."""
+    if "--until" not in args:
+        return float("inf")
+    k = args.index("--until")
+    until = float(args[k + 1]) * YEAR
+    del args[k:k + 2]
+    return until
+
+
 def main():
     args = sys.argv[1:]
     if any(a in ("-h", "--help") for a in args):
         print(__doc__)
         return
-    until = float("inf")
-    if "--until" in args:
-        k = args.index("--until")
-        until = float(args[k + 1]) * YEAR
-        del args[k:k + 2]
+    until = pop_until(args)
     if len(args) != 2:
         sys.exit("usage: compare.py RSFCYCLE_RUN HBI_RUN [--until YEARS]")
     ours, peer = args

@@ -17,7 +17,7 @@ where the sequences part).
 import os
 import sys
 
-from compare import YEAR, events, rows, value_at
+from compare import YEAR, events, pop_until, rows, value_at
 
 
 def station(run):
@@ -32,11 +32,7 @@ def main():
     if not args or any(a in ("-h", "--help") for a in args):
         print(__doc__)
         return
-    until = float("inf")
-    if "--until" in args:
-        k = args.index("--until")
-        until = float(args[k + 1]) * YEAR
-        del args[k:k + 2]
+    until = pop_until(args)
     table = []
     for arg in args:
         name, _, run = arg.partition("=")

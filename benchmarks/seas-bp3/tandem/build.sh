@@ -4,13 +4,18 @@
 #
 #   benchmarks/seas-bp3/tandem/build.sh [PREFIX]     (default /work/peers)
 #
-# Debian 12 has everything tandem needs except ParMETIS (non-free), so
-# GKlib, METIS and ParMETIS are built from KarypisLab's repositories into
-# PREFIX/tandem-deps. tandem is configured for 2D, polynomial degree 4,
-# ARCH=noarch (Debian's PETSc aligns memory to 16 bytes; tandem's hsw
-# wants 32), with petsc-3.18.patch (three spellings of PETSc 3.19 API). Every source is pinned below. Sources come from the local
-# mirror (/work/.mirror) if present, else from GitHub. Writes
-# PREFIX/tandem/build/app/tandem.
+# tandem needs PETSc with 64-bit indices, as its CI builds it (3.22,
+# --with-64-bit-indices): against Debian's PETSc 3.18 (32-bit indices) it
+# compiles (with petsc-3.18.patch) but its time loop fails, even on its own
+# manufactured solution (README.md). So PETSc v3.22.5 is built from source
+# into PREFIX/petsc/install (no downloads: no MUMPS; tandem then uses
+# PETSc's own LU), and GKlib, METIS and ParMETIS (not in Debian's main)
+# into PREFIX/tandem-deps. tandem is configured for 2D, polynomial degree
+# 4, ARCH=hsw (noarch without AVX2). petsc-3.18.patch is applied as well:
+# it is inert with PETSc 3.22, and it keeps the tree the one that ran.
+# Every source is pinned below; they come from the local mirror
+# (/work/.mirror) if present, else from GitHub. Writes
+# PREFIX/tandem/build-petsc322/app/tandem. About 25 minutes on 2 cores.
 set -euo pipefail
 PREFIX=${1:-/work/peers}
 TANDEM_COMMIT=b75f66692d299673bf85632ed71e2a7da71ff2e0  # 2026-06-29
@@ -19,9 +24,10 @@ YATETO_COMMIT=6920a2b602539baa503a959ab396f4918b2b439c  # tandem's submodule pin
 GKLIB_COMMIT=e2856c2f595b153ca1ce9258c5301dbabc4f39f5
 METIS_COMMIT=a6e6a2cfa92f93a3ee2971ebc9ddfc3b0b581ab2
 PARMETIS_COMMIT=8ee6a372ca703836f593e3c450ca903f04be14df
+PETSC_COMMIT=9fe822445bcdd45fb93170ff68fa7403d3f52f09   # v3.22.5
 
 DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
-  liblua5.3-dev libeigen3-dev zlib1g-dev petsc-dev libopenmpi-dev gmsh \
+  liblua5.3-dev libeigen3-dev zlib1g-dev libopenmpi-dev liblapack-dev gmsh \
   python3-numpy cmake g++ make > /dev/null
 
 source_of() {  # owner/name -> a git URL
@@ -49,6 +55,20 @@ if [ ! -f "$DEPS/lib/libparmetis.so" ]; then
      make -j2 install) > "$SRC/parmetis.log" 2>&1
 fi
 
+PETSC=$PREFIX/petsc
+if [ ! -f "$PETSC/install/lib/pkgconfig/PETSc.pc" ]; then
+  rm -rf "$PETSC/src"
+  git clone -q "$(source_of petsc/petsc)" "$PETSC/src"
+  git -C "$PETSC/src" checkout -q $PETSC_COMMIT
+  (cd "$PETSC/src" &&
+   ./configure --with-fortran-bindings=0 --with-debugging=0 --with-memalign=32 \
+     --with-64-bit-indices CC=mpicc CXX=mpicxx --with-fc=0 COPTFLAGS=-O3 CXXOPTFLAGS=-O3 \
+     --with-hdf5=0 --with-x=0 --prefix="$PETSC/install" &&
+   make PETSC_DIR="$PETSC/src" PETSC_ARCH=arch-linux-c-opt MAKE_NP=2 all &&
+   make PETSC_DIR="$PETSC/src" PETSC_ARCH=arch-linux-c-opt install) > "$PETSC/build.log" 2>&1 ||
+    { tail -20 "$PETSC/build.log"; exit 1; }
+fi
+
 T=$PREFIX/tandem
 if [ ! -d "$T/src/.git" ]; then
   git clone -q "$(source_of TEAR-ERC/tandem)" "$T/src"
@@ -61,16 +81,18 @@ if [ ! -d "$T/src/.git" ]; then
 fi
 [ "$(git -C "$T/src" rev-parse HEAD)" = $TANDEM_COMMIT ] ||
   { echo "ERROR: $T/src is not at the pinned $TANDEM_COMMIT" >&2; exit 1; }
-# our one patch: PetscStrcmpAny (PETSc 3.19) spelled with PetscStrcmp for
-# Debian's PETSc 3.18; it only reads -vec_type, no physics
+# our one patch (for Debian's PETSc 3.18; inert with 3.22): PetscStrcmpAny,
+# PETSC_SUCCESS and PCReduceFailedReason spelled for 3.18; no physics
 PATCH=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/petsc-3.18.patch
 if [ -z "$(git -C "$T/src" diff --name-only)" ]; then git -C "$T/src" apply "$PATCH"
 elif [ "$(git -C "$T/src" diff)" != "$(cat "$PATCH")" ]; then
   echo "ERROR: $T/src has changes other than $PATCH" >&2; exit 1
 fi
-cmake -S "$T/src" -B "$T/build" -DCMAKE_BUILD_TYPE=Release -DDOMAIN_DIMENSION=2 \
-  -DPOLYNOMIAL_DEGREE=4 -DARCH=noarch -DPython3_EXECUTABLE=/usr/bin/python3 -DCMAKE_PREFIX_PATH="$DEPS" \
+ARCH=noarch; grep -q avx2 /proc/cpuinfo && ARCH=hsw
+PKG_CONFIG_PATH=$PETSC/install/lib/pkgconfig \
+cmake -S "$T/src" -B "$T/build-petsc322" -DCMAKE_BUILD_TYPE=Release -DDOMAIN_DIMENSION=2 \
+  -DPOLYNOMIAL_DEGREE=4 -DARCH=$ARCH -DPython3_EXECUTABLE=/usr/bin/python3 -DCMAKE_PREFIX_PATH="$DEPS" \
   -DPARMETIS_INCLUDE_DIR="$DEPS/include" -DPARMETIS_LIBRARY="$DEPS/lib/libparmetis.so" \
   -DMETIS_INCLUDE_DIR="$DEPS/include" -DMETIS_LIBRARY="$DEPS/lib/libmetis.so" > "$T/cmake.log"
-nice make -C "$T/build" -j2 tandem > "$T/make.log" 2>&1 || { tail -20 "$T/make.log"; exit 1; }
-echo "$T/build/app/tandem"
+nice make -C "$T/build-petsc322" -j2 tandem > "$T/make.log" 2>&1 || { tail -20 "$T/make.log"; exit 1; }
+echo "$T/build-petsc322/app/tandem"

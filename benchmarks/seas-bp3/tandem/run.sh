@@ -14,9 +14,8 @@
 #   PEERS  where build.sh put tandem (default /work/peers)
 # Builds tandem if absent (build.sh), meshes tandem's bp3.geo with gmsh,
 # writes OUTDIR/bp3.toml (tandem_input.py), runs it on one rank with
-# MUMPS's LDL^T factorisation (tandem flags its SIPG matrix symmetric; PORD
-# ordering: 520 M entries at LF = 0.1, half of LU's, 1.2 s per Green's
-# function on this machine) and RK45 (Dormand-Prince), and converts the output
+# PETSc's own LU (nested dissection; the PETSc of build.sh has no MUMPS) for
+# the Green's functions and RK45 (Dormand-Prince), and converts the output
 # (tandem2seas.py) to global.dat, fltst_dpXXX(.dat) and srfst_fn±08 /
 # srfst_x±08.dat, the files compare.py reads for rsfcycle and HBI.
 set -euo pipefail
@@ -30,7 +29,7 @@ TMAX=${TMAX:-1500}
 NICE=${NICE:-10}
 PEERS=${PEERS:-/work/peers}
 OUT=${1:?usage: $0 OUTDIR}
-BIN=$PEERS/tandem/build/app/tandem
+BIN=$PEERS/tandem/build-petsc322/app/tandem
 [ -x "$BIN" ] || "$HERE/build.sh" "$PEERS"
 SRC=$PEERS/tandem/src/examples/tandem/2d
 
@@ -43,9 +42,10 @@ $PY "$HERE/tandem_input.py" "$OUT" --dip "$DIP" --sense "$SENSE" --mesh "$MESH" 
   --final-time "$($PY -c "print($TMAX * 3.1536e7)")" > /dev/null
 echo "== BP3-QD (dip $DIP, $SENSE): tandem $(git -C "$PEERS/tandem/src" rev-parse --short HEAD), Lf $LF km, degree 4, RK atol $RTOL, $TMAX yr -> $OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
-export LD_LIBRARY_PATH=$PEERS/tandem-deps/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}  # GKlib, METIS, ParMETIS
+# GKlib, METIS, ParMETIS and PETSc 3.22 (build.sh)
+export LD_LIBRARY_PATH=$PEERS/tandem-deps/lib:$PEERS/petsc/install/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 ( cd "$OUT" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.toml --petsc \
-    -ksp_type preonly -pc_type cholesky -pc_factor_mat_solver_type mumps -mat_mumps_icntl_7 4 \
+    -ksp_type preonly -pc_type lu -pc_factor_mat_ordering_type nd \
     -ts_type rk -ts_rk_type 5dp -ts_rtol 1e-50 -ts_atol "$RTOL" -ts_adapt_wnormtype infinity \
     > log.txt 2>&1 )
 $PY "$HERE/tandem2seas.py" "$OUT"

@@ -69,7 +69,6 @@ read_seas(const std::string &file)
   return rows;
 }
 
-/** x with `digits` digits after the point (a rounded digest value). */
 /** Whether the test runs on more than one MPI rank (NAME.mpirun=N). */
 inline bool
 on_ranks()
@@ -77,6 +76,7 @@ on_ranks()
   return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1;
 }
 
+/** x with `digits` digits after the point (a rounded digest value). */
 inline std::string
 to_fixed(const double x, const int digits)
 {

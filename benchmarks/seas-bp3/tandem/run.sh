@@ -12,6 +12,11 @@
 #   TMAX   end time in years of 365 days (default 1500)
 #   NICE   nice level (default 10)
 #   PEERS  where build.sh put tandem (default /work/peers)
+#   RESUME 1: continue OUTDIR's run from its last time-loop checkpoint
+#          (OUTDIR/checkpoint, written every 10 CPU minutes; the Green's
+#          functions are read from OUTDIR/gf). The same LF, DIP and SENSE
+#          as the first run; tandem appends to its output files, and
+#          tandem2seas.py keeps the restarted rows where the times overlap.
 # Builds tandem if absent (build.sh), meshes tandem's bp3.geo with gmsh,
 # writes OUTDIR/bp3.toml (tandem_input.py), runs it on one rank with
 # PETSc's own LU (nested dissection; the PETSc of build.sh has no MUMPS) for
@@ -33,19 +38,28 @@ BIN=$PEERS/tandem/build-petsc322/app/tandem
 [ -x "$BIN" ] || "$HERE/build.sh" "$PEERS"
 SRC=$PEERS/tandem/src/examples/tandem/2d
 
-mkdir -p "$OUT"
-cp "$SRC/bp3.lua" "$SRC/bp3.geo" "$OUT/"
 MESH=bp3-d$DIP-Lf$LF.msh
-(cd "$OUT" && gmsh -2 -setnumber Lf "$LF" -setnumber Ls "$LF" -setnumber dip "$DIP" bp3.geo \
-   -o "$MESH" > gmsh.log 2>&1)
+RESUME_FLAG=()
+if [ "${RESUME:-0}" = 1 ]; then
+  for f in "$OUT/$MESH" "$OUT/checkpoint/last_checkpoint.txt"; do
+    [ -f "$f" ] || { echo "RESUME=1: $f is missing (LF, DIP and SENSE as the first run?)" >&2; exit 2; }
+  done
+  RESUME_FLAG=(--resume)
+else
+  mkdir -p "$OUT"
+  rm -f "$OUT/log.txt" "$OUT/time.txt"
+  cp "$SRC/bp3.lua" "$SRC/bp3.geo" "$OUT/"
+  (cd "$OUT" && gmsh -2 -setnumber Lf "$LF" -setnumber Ls "$LF" -setnumber dip "$DIP" bp3.geo \
+     -o "$MESH" > gmsh.log 2>&1)
+fi
 $PY "$HERE/tandem_input.py" "$OUT" --dip "$DIP" --sense "$SENSE" --mesh "$MESH" \
-  --final-time "$($PY -c "print($TMAX * 3.1536e7)")" > /dev/null
+  --final-time "$($PY -c "print($TMAX * 3.1536e7)")" "${RESUME_FLAG[@]}" > /dev/null
 echo "== BP3-QD (dip $DIP, $SENSE): tandem $(git -C "$PEERS/tandem/src" rev-parse --short HEAD), Lf $LF km, degree 4, RK atol $RTOL, $TMAX yr -> $OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 # GKlib, METIS, ParMETIS and PETSc 3.22 (build.sh)
 export LD_LIBRARY_PATH=$PEERS/tandem-deps/lib:$PEERS/petsc/install/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-( cd "$OUT" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.toml --petsc \
+( cd "$OUT" && /usr/bin/time -v -a -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.toml --petsc \
     -ksp_type preonly -pc_type lu -pc_factor_mat_ordering_type nd \
     -ts_type rk -ts_rk_type 5dp -ts_rtol 1e-50 -ts_atol "$RTOL" -ts_adapt_wnormtype infinity \
-    > log.txt 2>&1 )
+    >> log.txt 2>&1 )
 $PY "$HERE/tandem2seas.py" "$OUT"

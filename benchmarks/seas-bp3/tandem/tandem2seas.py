@@ -29,16 +29,24 @@ import numpy as np
 
 
 def table(path):
-    """The numeric rows of a tandem CSV file (a '#' title, a quoted header)."""
+    """The numeric rows of a tandem CSV file (a '#' title, a quoted header).
+
+    A run continued from a checkpoint (run.sh's RESUME=1) appends rows from
+    the checkpoint's time on, after the rows the interrupted run wrote past
+    it: where the time goes back, the rows at and after the new row's time
+    are dropped, so the continued run's rows are the ones kept."""
     rows = []
     with open(path) as f:
         for line in f:
             if line.startswith("#") or line.startswith('"'):
                 continue
             try:
-                rows.append([float(x) for x in line.split(",")])
+                row = [float(x) for x in line.split(",")]
             except ValueError:
                 continue  # a row cut by a run still writing
+            while rows and rows[-1][0] >= row[0]:
+                rows.pop()
+            rows.append(row)
     return np.array(rows)
 
 

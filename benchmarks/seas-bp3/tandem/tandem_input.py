@@ -10,7 +10,9 @@ distances 0 ... 35 km), the maximum slip rate (global_, tandem's
 fault_scalar_output) and the surface stations at x = +8 and -8 km
 (srfst_fn+08, srfst_fn-08; tandem's y is up, the surface is y = 0).
 Green's functions (mode QDGreen) are kept in OUTDIR/gf, so a second run on
-the same mesh reuses them.
+the same mesh reuses them; the time loop is checkpointed to
+OUTDIR/checkpoint every 10 CPU minutes (tandem's default is 30), and
+--resume makes the run start from the last one (run.sh's RESUME=1).
 """
 import argparse
 import math
@@ -22,6 +24,8 @@ p.add_argument("--sense", choices=("thrust", "normal"), default="thrust")
 p.add_argument("--mesh", required=True)
 p.add_argument("--final-time", type=float, default=47304000000.0,
                help="s (default 1500 years of 365 days)")
+p.add_argument("--resume", action="store_true",
+               help="continue from OUTDIR/checkpoint/last_checkpoint.txt")
 a = p.parse_args()
 
 dip = math.radians(a.dip)
@@ -33,6 +37,8 @@ probes = ",\n".join(
     for dp in (0, 25, 50, 75, 100, 125, 150, 175, 200, 250, 300, 350))
 # t_max: at most 0.3 years between samples between events (tandem's
 # adaptive output samples densely when the slip rate changes)
+resume = ('load_directory = "checkpoint/last_checkpoint.txt"\n'
+          if a.resume else "")
 toml = f"""final_time = {a.final_time:.0f}
 mesh_file = "{a.mesh}"
 lib = "bp3.lua"
@@ -45,6 +51,9 @@ boundary_linear = true
 [gf_checkpoint]
 prefix = "gf"
 
+[ts_checkpoint]
+freq_cputime = 10
+{resume}
 [fault_probe_output]
 prefix = "fltst_"
 t_max = 9460800

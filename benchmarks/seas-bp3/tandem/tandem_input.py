@@ -35,10 +35,10 @@ probes = ",\n".join(
     f'    {{ name = "dp{dp:03d}", x = [{dp / 10 * math.cos(dip):.15g}, '
     f'{-dp / 10 * math.sin(dip):.15g}] }}'
     for dp in (0, 25, 50, 75, 100, 125, 150, 175, 200, 250, 300, 350))
-# t_max: at most 0.3 years between samples between events (tandem's
-# adaptive output samples densely when the slip rate changes)
 resume = ('load_directory = "checkpoint/last_checkpoint.txt"\n'
           if a.resume else "")
+# t_max: at most 0.3 years between samples between events (tandem's
+# adaptive output samples densely when the slip rate changes)
 toml = f"""final_time = {a.final_time:.0f}
 mesh_file = "{a.mesh}"
 lib = "bp3.lua"

@@ -20,6 +20,24 @@
 //     to 1e-10) and dissipates some over 800 steps of T/800 (the stiffest mesh
 //     modes).
 //  3. The refusal of a run without inertia, in one line.
+//  4. Kelvin-Voigt relaxation with inertia, on one mode of a body whose
+//     viscosity is T times its stiffness (C = T K, as newmark_oscillator's
+//     quasi-static relaxation): u'' + c u' + k u = 0 with c = T k, T = 1,
+//     k = 1e4, so the inertial time 1/(T k) = 1e-4 T and the motion is
+//     nearly quasi-static. Its closed form: u = A exp(s1 t) + B exp(s2 t),
+//     s1,2 = (-c -+ sqrt(c^2 - 4k))/2 (s1 = -1.0001/T, the relaxation;
+//     s2 = -9999/T, the inertia). Checked for rho_inf = 0, 0.5, 0.8, 1:
+//     - the step is stable with the damping: the spectral radius is at most
+//       1 for tau/T from 1e-4 to 1e8;
+//     - the relaxation is kept: at tau = 0.01 T an eigenvalue of the step's
+//       amplification is exp(s1 tau) to 1e-6;
+//     - the stiff relaxing mode decays by rho_inf per step: the radius at
+//       tau = 1e6 T is rho_inf to 1e-3 (theta = 1/2 keeps it at -0.96 a step
+//       at tau = 100 T, newmark_oscillator; here rho_inf = 1 does the same,
+//       radius 1);
+//     - second order: the error of u(T) from rest (u = 1, v = 0) against
+//       the closed form falls by ~4 per halving of tau; the order between
+//       T/400 and T/800 is 2 within 0.1.
 #include "block_scene.h"
 #include "tests.h"
 
@@ -32,41 +50,94 @@
 #include <rsfcycle/problem_base.h>
 #include <rsfcycle/time/generalized_alpha_scheme.h>
 #include <rsfcycle/time/schemes.h>
+#include <vector>
 
 using namespace dealii;
 using namespace rsfcycle;
 
-/** The spectral radius of one step of `scheme` on u'' + Omega^2 u = 0. */
-double
-spectral_radius(const time::TimeScheme &scheme, const double Omega)
+/** u, v and a of one degree of freedom. */
+struct Mode
 {
-  const double             tau = 1, k = Omega * Omega;
+  double u, v, a;
+};
+
+/**
+ * One step of `scheme` on u'' + c u' + k u = 0 (unit mass), through the
+ * same formulas as ImplicitStep: the step matrix, the known parts, the new
+ * velocity, acceleration and displacement.
+ */
+Mode
+one_step(const time::TimeScheme &scheme,
+         const double            tau,
+         const double            k,
+         const double            damping,
+         const Mode             &x)
+{
+  const auto   c = scheme.step_coefficients(tau);
+  const auto   d = scheme.known_displacement();
+  const auto   m = scheme.known_inertia(tau);
+  const double w = (-k * (x.u + tau * (d[0] * x.v + tau * d[1] * x.a)) +
+                    m[0] * x.v + m[1] * x.a) /
+                   (c[0] + c[1] * damping + c[2] * k);
+  const auto   e  = scheme.new_velocity();
+  const auto   g  = scheme.new_acceleration(tau);
+  const auto   h  = scheme.new_displacement();
+  const double v1 = e[0] * w + e[1] * x.v;
+  const double a1 = g[0] * (v1 - x.v) + g[1] * x.a;
+  const double u1 =
+    x.u + tau * (h[0] * x.v + h[1] * v1) + tau * tau * (h[2] * x.a + h[3] * a1);
+  return {u1, v1, a1};
+}
+
+/**
+ * The eigenvalues of the amplification matrix of (u, tau v, tau^2 a) of one
+ * step of `scheme` on u'' + c u' + k u = 0.
+ */
+std::vector<std::complex<double>>
+amplification_eigenvalues(const time::TimeScheme &scheme,
+                          const double            tau,
+                          const double            k,
+                          const double            damping)
+{
   LAPACKFullMatrix<double> amplification(3, 3);
   for (unsigned int j = 0; j < 3; ++j)
     {
-      const double u = j == 0, v = j == 1, a = j == 2;
-      const auto   c = scheme.step_coefficients(tau);
-      const auto   d = scheme.known_displacement();
-      const auto   m = scheme.known_inertia(tau);
-      const double w =
-        (-k * (u + tau * (d[0] * v + tau * d[1] * a)) + m[0] * v + m[1] * a) /
-        (c[0] + c[2] * k);
-      const auto   e  = scheme.new_velocity();
-      const auto   g  = scheme.new_acceleration(tau);
-      const auto   h  = scheme.new_displacement();
-      const double v1 = e[0] * w + e[1] * v;
-      const double a1 = g[0] * (v1 - v) + g[1] * a;
-      const double u1 =
-        u + tau * (h[0] * v + h[1] * v1) + tau * tau * (h[2] * a + h[3] * a1);
-      amplification(0, j) = u1;
-      amplification(1, j) = v1;
-      amplification(2, j) = a1;
+      const Mode x1       = one_step(scheme,
+                               tau,
+                               k,
+                               damping,
+                               {1. * (j == 0),
+                                      1. * (j == 1) / tau,
+                                      1. * (j == 2) / (tau * tau)});
+      amplification(0, j) = x1.u;
+      amplification(1, j) = tau * x1.v;
+      amplification(2, j) = tau * tau * x1.a;
     }
   amplification.compute_eigenvalues();
-  double radius = 0;
+  std::vector<std::complex<double>> eigenvalues;
   for (unsigned int i = 0; i < 3; ++i)
-    radius = std::max(radius, std::abs(amplification.eigenvalue(i)));
+    eigenvalues.push_back(amplification.eigenvalue(i));
+  return eigenvalues;
+}
+
+/** The largest modulus of those eigenvalues. */
+double
+spectral_radius(const time::TimeScheme &scheme,
+                const double            tau,
+                const double            k,
+                const double            damping)
+{
+  double radius = 0;
+  for (const auto lambda : amplification_eigenvalues(scheme, tau, k, damping))
+    radius = std::max(radius, std::abs(lambda));
   return radius;
+}
+
+/** The undamped oscillator u'' + Omega^2 u = 0, one step of tau = 1. */
+double
+spectral_radius(const time::TimeScheme &scheme, const double Omega)
+{
+  return spectral_radius(scheme, 1., Omega * Omega, 0.);
 }
 
 class InitialVelocity : public Function<2>
@@ -201,4 +272,61 @@ main(int argc, char **argv)
     {
       deallog << "quasi-static: " << error.what() << std::endl;
     }
+  // 4. Kelvin-Voigt relaxation with inertia: u'' + c u' + k u = 0, c = T k
+  {
+    const double               k = 1e4, damping = 1. * k; // T = 1
+    const std::complex<double> root =
+      std::sqrt(std::complex<double>(damping * damping - 4 * k));
+    const std::complex<double> s1 = (-damping + root) / 2.,
+                               s2 = (-damping - root) / 2.;
+    // from rest at u = 1: A + B = 1, s1 A + s2 B = 0
+    const std::complex<double> B = -s1 / (s2 - s1), A = 1. - B;
+    const double exact = (A * std::exp(s1) + B * std::exp(s2)).real();
+    for (const double rho : {0., 0.5, 0.8, 1.})
+      {
+        const time::GeneralizedAlphaScheme scheme(rho);
+        double                             largest = 0;
+        for (const double z :
+             {1e-4, 1e-3, 1e-2, 0.1, 1., 10., 100., 1e4, 1e6, 1e8})
+          largest = std::max(largest, spectral_radius(scheme, z, k, damping));
+        // the eigenvalue of the relaxing mode: the one nearest exp(s1 tau)
+        const double kept = std::exp(0.01 * s1.real());
+        double       slow = 0;
+        for (const auto lambda :
+             amplification_eigenvalues(scheme, 0.01, k, damping))
+          if (std::abs(lambda - kept) < std::abs(slow - kept))
+            slow = lambda.real();
+        const double stiff = spectral_radius(scheme, 1e6, k, damping);
+        deallog << "Kelvin-Voigt, rho_inf " << rho
+                << ": largest spectral radius " << largest
+                << " (at most 1: " << yes_no(largest <= 1 + 1e-12)
+                << "), its eigenvalue nearest exp(s1 tau) at tau = 0.01 T "
+                << slow << " (exp(s1 tau) to 1e-6: "
+                << yes_no(std::abs(slow - kept) < 1e-6) << "), at tau = 1e6 T "
+                << stiff
+                << " (rho_inf to 1e-3: " << yes_no(std::abs(stiff - rho) < 1e-3)
+                << ")" << std::endl;
+        double previous = 0;
+        for (const unsigned int n : {100, 200, 400, 800})
+          {
+            const double tau = 1. / n;
+            Mode         x{1., 0., -k};
+            for (unsigned int i = 0; i < n; ++i)
+              x = one_step(scheme, tau, k, damping, x);
+            const double error = std::abs(x.u - exact) / std::abs(exact);
+            deallog << "Kelvin-Voigt, rho_inf " << rho << ", steps " << n
+                    << ": relative error of u(T) " << error;
+            if (previous > 0)
+              {
+                const double order = std::log2(previous / error);
+                deallog << ", order " << order;
+                if (n == 800)
+                  deallog << " (2 within 0.1: "
+                          << yes_no(std::abs(order - 2) < 0.1) << ")";
+              }
+            deallog << std::endl;
+            previous = error;
+          }
+      }
+  }
 }

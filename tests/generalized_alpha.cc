@@ -173,6 +173,24 @@ yes_no(const bool b)
   return b ? "yes" : "no";
 }
 
+/**
+ * After the error with n steps, the observed order against the error with
+ * n/2 (`previous`, 0 for the first); with 800 steps whether it is 2 within
+ * 0.1.
+ */
+void
+log_order(const double previous, const double error, const unsigned int n)
+{
+  if (previous > 0)
+    {
+      const double order = std::log2(previous / error);
+      deallog << ", order " << order;
+      if (n == 800)
+        deallog << " (2 within 0.1: " << yes_no(std::abs(order - 2) < 0.1)
+                << ")";
+    }
+}
+
 int
 main(int argc, char **argv)
 {
@@ -240,14 +258,7 @@ main(int argc, char **argv)
             diff.l2_norm() / std::get<0>(reference).l2_norm();
           deallog << "rho_inf " << rho << ", steps " << n
                   << ": relative error of u(T) " << error;
-          if (previous > 0)
-            {
-              const double order = std::log2(previous / error);
-              deallog << ", order " << order;
-              if (n == 800)
-                deallog << " (2 within 0.1: "
-                        << yes_no(std::abs(order - 2) < 0.1) << ")";
-            }
+          log_order(previous, error, n);
           if (n == 800 && rho == 1)
             deallog << ", energy conserved to 1e-8: "
                     << yes_no(std::abs(loss) < 1e-8 && max_gain < 1e-8);
@@ -316,14 +327,7 @@ main(int argc, char **argv)
             const double error = std::abs(x.u - exact) / std::abs(exact);
             deallog << "Kelvin-Voigt, rho_inf " << rho << ", steps " << n
                     << ": relative error of u(T) " << error;
-            if (previous > 0)
-              {
-                const double order = std::log2(previous / error);
-                deallog << ", order " << order;
-                if (n == 800)
-                  deallog << " (2 within 0.1: "
-                          << yes_no(std::abs(order - 2) < 0.1) << ")";
-              }
+            log_order(previous, error, n);
             deallog << std::endl;
             previous = error;
           }

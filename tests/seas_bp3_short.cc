@@ -26,15 +26,17 @@
 // Printed: the events' starts and peak slip rates, the slips at the
 // surface and at 10 km down dip after them and the largest normal stress
 // change at the surface (rounded: the run is coarse; its resolution is
-// not the benchmark's, benchmarks/seas-bp3/README.md; the starts to whole
-// years, as the second, 273.54 years, moves by days with the rounding of
-// the machine's arithmetic).
+// not the benchmark's, benchmarks/seas-bp3/README.md); the starts are
+// checked against this run's 175.48 and 273.50 years to half a year (they
+// move by days with the rounding of the machine's arithmetic: the second
+// printed as 274 on one machine and 273 on another, 2026-11-28).
 #include "run_model.h"
 #include "tests.h"
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <filesystem>
+#include <vector>
 
 using namespace rsfcycle;
 
@@ -199,10 +201,15 @@ main(int argc, char **argv)
   // the digest: events.csv (event, start [s], end, duration, nucleation,
   // peak [m/s], ...)
   const auto events = read_csv(out + "events.csv");
-  dealii::deallog << "events: start";
-  for (const auto &e : events)
-    dealii::deallog << " " << to_fixed(e[1] / 3.1536e7, 0);
-  dealii::deallog << " yr, peak log10 V";
+  // the starts against this run's 175.48 and 273.50 years to half a year
+  // (rounded to whole years they sat on the rounding's edge: the
+  // machine's arithmetic moves them by days)
+  const std::vector<double> starts = {175.48, 273.50};
+  bool                      near   = events.size() == starts.size();
+  for (unsigned int k = 0; near && k < events.size(); ++k)
+    near = std::abs(events[k][1] / 3.1536e7 - starts[k]) < 0.5;
+  dealii::deallog << "events: start 175.5 273.5 yr (0.5 yr): " << yes(near)
+                  << ", peak log10 V";
   for (const auto &e : events)
     dealii::deallog << " " << to_fixed(std::log10(e[5]), 1);
   dealii::deallog << "; slip at the surface " << to_fixed(s, 2)

@@ -191,8 +191,9 @@ namespace rsfcycle
           auto system =
             physics::gather_system(discretisation, contact.contact_set(), {});
           physics::tie_split_fault(discretisation, system);
-          auto solver = std::make_unique<physics::InteriorSolver>(system);
-          split_body  = std::make_unique<SplitBody>(
+          auto solver = std::make_unique<physics::InteriorSolver>(
+            system, discretisation.triangulation.get_communicator());
+          split_body = std::make_unique<SplitBody>(
             SplitBody{std::move(system), std::move(solver)});
         }
       const auto &system = split_body->system;

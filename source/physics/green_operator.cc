@@ -37,7 +37,7 @@ namespace rsfcycle
       std::vector<int> contact_index(n, -1);
       for (unsigned int k = 0; k < n_c; ++k)
         contact_index[contact_dofs[k]] = k;
-      const InteriorSolver interior(K);
+      const InteriorSolver interior(K, communicator);
       const unsigned int   n_I            = interior.n_interior();
       const auto           interior_index = [&interior](const unsigned int i) {
         return interior.interior_index(i);

@@ -9,7 +9,8 @@ namespace rsfcycle
 {
   namespace physics
   {
-    InteriorSolver::InteriorSolver(const GlobalSystem &K)
+    InteriorSolver::InteriorSolver(const GlobalSystem &K,
+                                   const MPI_Comm      communicator)
     {
       const unsigned int n = K.n();
       index.assign(n, -1);
@@ -24,6 +25,18 @@ namespace rsfcycle
           }
       const unsigned int n_I = interior.size();
 
+      // K_II on the node's first rank, which factorises it for the node
+      MPI_Comm node;
+      MPI_Comm_split_type(
+        communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+      int node_rank = 0;
+      MPI_Comm_rank(node, &node_rank);
+      MPI_Comm_free(&node);
+      if (node_rank != 0)
+        {
+          cholesky.factorize_shared(nullptr, communicator);
+          return;
+        }
       dealii::DynamicSparsityPattern dsp(n_I, n_I);
       for (unsigned int k = 0; k < n_I; ++k)
         for (auto e = K.row_begin(interior[k]); e < K.row_end(interior[k]); ++e)
@@ -36,7 +49,7 @@ namespace rsfcycle
         for (auto e = K.row_begin(interior[k]); e < K.row_end(interior[k]); ++e)
           if (index[K.columns[e]] >= 0)
             K_II.set(k, index[K.columns[e]], K.values[e]);
-      cholesky.factorize(K_II);
+      cholesky.factorize_shared(&K_II, communicator);
     }
 
 

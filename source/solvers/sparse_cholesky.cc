@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <array>
 #include <cholmod.h>
+#include <cstring>
 #include <rsfcycle/solvers/sparse_cholesky.h>
 #include <stdexcept>
 #include <vector>
@@ -18,6 +20,11 @@ namespace rsfcycle
       // factorised numerically (the fill-reducing ordering and the
       // supernodal structure are kept)
       std::vector<int> analysed_p, analysed_i;
+      // a factor shared by the ranks of a node (factorize_shared()): its
+      // arrays in the MPI window, `factor` points to `view`
+      MPI_Win        window = MPI_WIN_NULL;
+      MPI_Comm       node   = MPI_COMM_NULL;
+      cholmod_factor view;
 
       Data()
       {
@@ -26,9 +33,22 @@ namespace rsfcycle
       }
       ~Data()
       {
+        release();
+        cholmod_finish(&common);
+      }
+
+      /** Free the factor (collective on the node if it is shared). */
+      void
+      release()
+      {
+        if (window != MPI_WIN_NULL)
+          {
+            MPI_Win_free(&window);
+            MPI_Comm_free(&node);
+            factor = nullptr;
+          }
         if (factor != nullptr)
           cholmod_free_factor(&factor, &common);
-        cholmod_finish(&common);
       }
 
       cholmod_dense *
@@ -99,8 +119,7 @@ namespace rsfcycle
         std::equal(i, i + k, data->analysed_i.begin(), data->analysed_i.end());
       if (!same_pattern)
         {
-          if (data->factor != nullptr)
-            cholmod_free_factor(&data->factor, &data->common);
+          data->release();
           data->factor = cholmod_analyze(S, &data->common);
           data->analysed_p.assign(p, p + n + 1);
           data->analysed_i.assign(i, i + k);
@@ -112,6 +131,119 @@ namespace rsfcycle
         throw std::runtime_error(
           "CHOLMOD: the matrix is not positive definite");
       data->n = n;
+    }
+
+
+    namespace
+    {
+      /**
+       * The arrays of a CHOLMOD factor (simplicial or supernodal, integer
+       * indices): each field's address, its length and its entry's size.
+       */
+      std::array<std::tuple<void **, std::size_t, std::size_t>, 12>
+      factor_arrays(cholmod_factor &L)
+      {
+        const std::size_t i = sizeof(int), d = sizeof(double);
+        return {{{&L.Perm, L.n, i},
+                 {&L.ColCount, L.n, i},
+                 {&L.p, L.n + 1, i},
+                 {&L.i, L.nzmax, i},
+                 {&L.x, L.is_super ? L.xsize : L.nzmax, d},
+                 {&L.nz, L.n, i},
+                 {&L.next, L.n + 2, i},
+                 {&L.prev, L.n + 2, i},
+                 {&L.super, L.nsuper + 1, i},
+                 {&L.pi, L.nsuper + 1, i},
+                 {&L.px, L.nsuper + 1, i},
+                 {&L.s, L.ssize, i}}};
+      }
+    } // namespace
+
+
+    void
+    SparseCholesky::factorize_shared(const dealii::SparseMatrix<double> *A,
+                                     const MPI_Comm communicator)
+    {
+      data->release();
+      data->analysed_p.clear();
+      data->analysed_i.clear();
+      MPI_Comm &node = data->node;
+      MPI_Comm_split_type(
+        communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+      int node_rank = 0;
+      MPI_Comm_rank(node, &node_rank);
+      if ((node_rank == 0) != (A != nullptr))
+        throw std::logic_error(
+          "SparseCholesky::factorize_shared: the matrix is given on the "
+          "node's first rank, and only there");
+
+      // the node's first rank factorises; the header and which arrays it
+      // has go to the others
+      int status = 0;
+      if (node_rank == 0)
+        try
+          {
+            factorize(*A);
+            if (data->factor->itype != CHOLMOD_INT ||
+                data->factor->xtype != CHOLMOD_REAL)
+              throw std::runtime_error("CHOLMOD: an unexpected factor type");
+          }
+        catch (...)
+          {
+            status = 1;
+            MPI_Bcast(&status, 1, MPI_INT, 0, node);
+            throw;
+          }
+      MPI_Bcast(&status, 1, MPI_INT, 0, node);
+      if (status != 0)
+        throw std::runtime_error(
+          "CHOLMOD: the matrix is not positive definite");
+      cholmod_factor &view = data->view;
+      if (node_rank == 0)
+        view = *data->factor;
+      MPI_Bcast(&view, sizeof(view), MPI_BYTE, 0, node);
+      data->n = view.n;
+
+      // one window of all arrays, each at a multiple of 64 bytes, filled by
+      // the first rank (which then frees its own copy)
+      const auto          arrays = factor_arrays(view);
+      std::vector<char>   present(arrays.size());
+      std::vector<size_t> offset(arrays.size() + 1, 0);
+      for (unsigned int a = 0; a < arrays.size(); ++a)
+        {
+          const auto &[field, count, size] = arrays[a];
+          present[a]                       = *field != nullptr;
+          offset[a + 1] =
+            offset[a] + (present[a] ? (count * size + 63) / 64 * 64 : 0);
+        }
+      char *base = nullptr;
+      MPI_Win_allocate_shared(node_rank == 0 ? offset.back() : 0,
+                              1,
+                              MPI_INFO_NULL,
+                              node,
+                              &base,
+                              &data->window);
+      if (node_rank != 0)
+        {
+          MPI_Aint size;
+          int      unit;
+          MPI_Win_shared_query(data->window, 0, &size, &unit, &base);
+        }
+      for (unsigned int a = 0; a < arrays.size(); ++a)
+        {
+          const auto &[field, count, size] = arrays[a];
+          if (node_rank == 0 && present[a])
+            std::memcpy(base + offset[a], *field, count * size);
+          *field = present[a] ? base + offset[a] : nullptr;
+        }
+      view.IPerm = nullptr;
+      view.z     = nullptr;
+      if (node_rank == 0)
+        cholmod_free_factor(&data->factor, &data->common);
+      data->factor = &view;
+      data->analysed_p.clear();
+      data->analysed_i.clear();
+      MPI_Win_fence(0, data->window);
     }
 
 

@@ -19,13 +19,18 @@ namespace rsfcycle
      * physics::compute_green_operator() takes the columns K_II^-1 K_Ic of
      * its Schur complement from it; models::GreenFault::body() the whole
      * body of a split fault, in the tied unknowns (physics/split_fault.h).
-     * The factor holds all of K_II on every rank.
+     * The factor holds all of K_II, once per node: the node's first rank
+     * factorises and its other ranks solve with that factor
+     * (solvers::SparseCholesky::factorize_shared()).
      */
     class InteriorSolver
     {
     public:
-      /** Index the dofs and factorise K_II of `system`. */
-      explicit InteriorSolver(const GlobalSystem &system);
+      /**
+       * Index the dofs and factorise K_II of `system` (the same on every
+       * rank of `communicator`; collective, as is the destructor).
+       */
+      InteriorSolver(const GlobalSystem &system, MPI_Comm communicator);
 
       /** The number of interior dofs, n_I. */
       unsigned int

@@ -5,6 +5,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
+#include <mpi.h>
 
 namespace rsfcycle
 {
@@ -29,6 +30,19 @@ namespace rsfcycle
       /** Factorise A (symmetric; only its upper triangle is read). */
       void
       factorize(const dealii::SparseMatrix<double> &A);
+
+      /**
+       * Factorise A once per node: the first rank of each node of
+       * `communicator` (MPI_COMM_TYPE_SHARED) factorises A, which it alone
+       * passes (the others pass nullptr), and puts the factor into an MPI
+       * shared-memory window from which every rank of the node solves. So
+       * a node holds one factor whatever its number of ranks. Collective on
+       * `communicator`; the factor is freed collectively on the node (by
+       * the destructor or the next factorisation).
+       */
+      void
+      factorize_shared(const dealii::SparseMatrix<double> *A,
+                       MPI_Comm                            communicator);
 
       /** x = A^{-1} b. */
       void

@@ -264,7 +264,8 @@ namespace rsfcycle
             << " MB)";
       log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())
-        log << "from a Cholesky factor of " << op.n_interior << " unknowns and "
+        log << "from a Cholesky factor of " << op.n_interior << " unknowns ("
+            << format_number(op.factor_megabytes) << " MB, one per node) and "
             << op.n_blocks << " block solves";
       else
         log << "read from " << operator_source;

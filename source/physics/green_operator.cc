@@ -44,9 +44,10 @@ namespace rsfcycle
       };
 
       GreenOperator op;
-      op.n_interior = n_I;
-      op.n_nodes    = n_c;
-      op.first_row  = first;
+      op.n_interior       = n_I;
+      op.factor_megabytes = 1e-6 * interior.factor_bytes();
+      op.n_nodes          = n_c;
+      op.first_row        = first;
 
       // The loads: the force f (body force and shear prestress) and the
       // prescribed velocity v_b of the fixed dofs (zero but on loads).

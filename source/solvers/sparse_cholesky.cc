@@ -247,6 +247,19 @@ namespace rsfcycle
     }
 
 
+    std::size_t
+    SparseCholesky::memory_bytes() const
+    {
+      if (data->factor == nullptr)
+        return 0;
+      std::size_t bytes = 0;
+      for (const auto &[field, count, size] : factor_arrays(*data->factor))
+        if (*field != nullptr)
+          bytes += count * size;
+      return bytes;
+    }
+
+
     void
     SparseCholesky::solve(const dealii::Vector<double> &b,
                           dealii::Vector<double>       &x) const

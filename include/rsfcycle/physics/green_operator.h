@@ -72,6 +72,8 @@ namespace rsfcycle
       unsigned int n_nodes           = 0; // n_c, all ranks
       unsigned int n_interior        = 0;
       unsigned int n_blocks          = 0; // multi-RHS solves
+      /** The Cholesky factor's size (one per node), for the log. */
+      double factor_megabytes = 0;
       /** The rows of S (and of N) as H-matrices, once compress() has run. */
       std::shared_ptr<const solvers::HierarchicalMatrix> compressed,
         compressed_normal;

@@ -53,6 +53,13 @@ namespace rsfcycle
         return interior[k];
       }
 
+      /** The factor's size in bytes (held once per node). */
+      std::size_t
+      factor_bytes() const
+      {
+        return cholesky.memory_bytes();
+      }
+
       /** X = K_II^-1 B for all columns of B (n_I rows). */
       void
       solve(const dealii::FullMatrix<double> &B,

@@ -44,6 +44,13 @@ namespace rsfcycle
       factorize_shared(const dealii::SparseMatrix<double> *A,
                        MPI_Comm                            communicator);
 
+      /**
+       * The factor's size in bytes (its arrays; one window per node for a
+       * shared factor).
+       */
+      std::size_t
+      memory_bytes() const;
+
       /** x = A^{-1} b. */
       void
       solve(const dealii::Vector<double> &b, dealii::Vector<double> &x) const;

@@ -26,13 +26,7 @@ namespace rsfcycle
       const unsigned int n_I = interior.size();
 
       // K_II on the node's first rank, which factorises it for the node
-      MPI_Comm node;
-      MPI_Comm_split_type(
-        communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-      int node_rank = 0;
-      MPI_Comm_rank(node, &node_rank);
-      MPI_Comm_free(&node);
-      if (node_rank != 0)
+      if (!solvers::SparseCholesky::first_on_node(communicator))
         {
           cholesky.factorize_shared(nullptr, communicator);
           return;

@@ -160,6 +160,19 @@ namespace rsfcycle
     } // namespace
 
 
+    bool
+    SparseCholesky::first_on_node(const MPI_Comm communicator)
+    {
+      MPI_Comm node;
+      MPI_Comm_split_type(
+        communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+      int node_rank = 0;
+      MPI_Comm_rank(node, &node_rank);
+      MPI_Comm_free(&node);
+      return node_rank == 0;
+    }
+
+
     void
     SparseCholesky::factorize_shared(const dealii::SparseMatrix<double> *A,
                                      const MPI_Comm communicator)

@@ -45,6 +45,13 @@ namespace rsfcycle
                        MPI_Comm                            communicator);
 
       /**
+       * Whether this rank is the first of its node in `communicator` (the
+       * one that passes the matrix to factorize_shared()). Collective.
+       */
+      static bool
+      first_on_node(MPI_Comm communicator);
+
+      /**
        * The factor's size in bytes (its arrays; one window per node for a
        * shared factor).
        */

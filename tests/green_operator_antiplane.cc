@@ -198,7 +198,7 @@ main(int argc, char **argv)
   std::vector<double>    xy;
   for (const auto &node : nodes)
     xy.insert(xy.end(), {node.position[0], node.position[1]});
-  const double           reported = compressed.compress(xy, 2, 1e-6);
+  const double reported = compressed.compress(xy, 2, 1e-6, MPI_COMM_SELF);
   dealii::Vector<double> Hs(n);
   compressed.compressed->vmult(s.data(), Hs.data());
   Hs -= Ss;

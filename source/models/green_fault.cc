@@ -249,22 +249,28 @@ namespace rsfcycle
             compression_error = Utilities::MPI::max(
               op.compress(la::all_gather(communicator, points),
                           dim,
-                          parameters.solver.green_compression_tolerance),
+                          parameters.solver.green_compression_tolerance,
+                          communicator),
               communicator);
+            compressed_fraction =
+              Utilities::MPI::sum(double(op.stored_entries()), communicator) /
+              (double(op.n_contact()) * op.n_contact());
+            low_rank_blocks =
+              Utilities::MPI::sum(op.n_low_rank_blocks(), communicator);
+            dense_blocks =
+              Utilities::MPI::sum(op.n_dense_blocks(), communicator);
           }
         // what the run keeps of S on the rank that keeps most
         // (and of N, with a split fault's normal coupling)
-        const auto stored = [&](const auto &compressed) {
-          return compressed ? double(compressed->stored_entries()) :
-                              double(op.n_rows()) * op.n_contact();
-        };
-        operator_megabytes =
-          Utilities::MPI::max(8e-6 *
-                                (stored(op.compressed) +
-                                 (op.normal_coupling && !op.normal_negligible ?
-                                    stored(op.compressed_normal) :
-                                    0.)),
-                              communicator);
+        const double dense = double(op.n_rows()) * op.n_contact();
+        operator_megabytes = Utilities::MPI::max(
+          8e-6 * ((op.is_compressed() ? double(op.stored_entries()) : dense) +
+                  (op.normal_coupling && !op.normal_negligible ?
+                     (op.compressed_normal ?
+                        double(op.compressed_normal->stored_entries()) :
+                        dense) :
+                     0.)),
+          communicator);
       }
 
       // The initial slip is the volume path's: the tangential displacement
@@ -574,7 +580,7 @@ namespace rsfcycle
                                         discretisation.dof_handler.n_dofs(),
                                         communicator);
         }
-      if (op.compressed)
+      if (op.is_compressed())
         op.release_dense();
       Simulator<State> simulator(parameters, *this, log, timer);
       return !simulator.run(resume).interrupted;

@@ -234,20 +234,26 @@ namespace rsfcycle
           << contact.n_global_nodes() << " contact nodes\n"
           << "Bulk: green-function, operator " << op.n_contact() << " x "
           << op.n_contact();
-      if (op.compressed)
+      if (op.is_compressed())
         log << " as an H-matrix (tolerance "
-            << parameters.solver.green_compression_tolerance << ": "
-            << format_number(100. * op.compressed->stored_entries() /
-                             (double(op.n_rows()) * op.n_contact()))
-            << " % of the dense numbers, " << op.compressed->n_low_rank_blocks()
-            << " low-rank and " << op.compressed->n_dense_blocks()
+            << parameters.solver.green_compression_tolerance
+            << ", its lower triangle: "
+            << format_number(100. * compressed_fraction)
+            << " % of the dense numbers, " << low_rank_blocks
+            << " low-rank and " << dense_blocks
             << " dense blocks, product error " << compression_error << ")";
       else
         log << " dense";
       if (const unsigned int ranks =
             Utilities::MPI::n_mpi_processes(communicator);
           ranks > 1)
-        log << " (" << op.n_rows() << " rows on rank 0 of " << ranks << ")";
+        log << " (" << op.n_rows() << " rows on rank 0 of " << ranks
+            << (op.is_compressed() ?
+                  "; the triangle's products " +
+                    std::to_string(op.product_end - op.product_begin) +
+                    " rows on rank 0" :
+                  std::string())
+            << ")";
       log << ", " << format_number(operator_megabytes)
           << " MB on the rank that holds most";
       if (op.normal_coupling && op.normal_negligible)

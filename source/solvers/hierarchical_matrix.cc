@@ -1,5 +1,6 @@
 // A matrix of point interactions compressed by hmat-oss
 // (solvers/hierarchical_matrix.h).
+#include <functional>
 #include <hmat/hmat.h>
 #include <rsfcycle/solvers/hierarchical_matrix.h>
 #include <stdexcept>
@@ -25,12 +26,14 @@ namespace rsfcycle
         return hmat;
       }
 
-      // the entry callback of the assembly: A(i, j) in the original order
+      using Entry = std::function<double(unsigned int, unsigned int)>;
+
+      // the entry callback of the assembly: (i, j) in the original order
       void
-      entry(void *context, const int i, const int j, void *result)
+      entry_of(void *context, const int i, const int j, void *result)
       {
         *static_cast<double *>(result) =
-          (*static_cast<const dealii::FullMatrix<double> *>(context))(i, j);
+          (*static_cast<const Entry *>(context))(i, j);
       }
     } // namespace
 
@@ -91,14 +94,38 @@ namespace rsfcycle
       const bool                        symmetric,
       const unsigned int                leaf_size,
       const double                      eta)
+      : HierarchicalMatrix(
+          A.m(),
+          A.n(),
+          [&A](const unsigned int i, const unsigned int j) { return A(i, j); },
+          row_points,
+          column_points,
+          dim,
+          tolerance,
+          symmetric,
+          leaf_size,
+          eta)
+    {}
+
+
+    HierarchicalMatrix::HierarchicalMatrix(
+      const unsigned int         m,
+      const unsigned int         n,
+      const Entry               &entry,
+      const std::vector<double> &row_points,
+      const std::vector<double> &column_points,
+      const unsigned int         dim,
+      const double               tolerance,
+      const bool                 symmetric,
+      const unsigned int         leaf_size,
+      const double               eta)
       : data(std::make_unique<Data>())
     {
       auto      &hmat = interface();
       const auto fail = [](const std::string &what) {
         return std::runtime_error("hmat-oss: " + what + " failed");
       };
-      if (row_points.size() != dim * A.m() ||
-          column_points.size() != dim * A.n())
+      if (row_points.size() != dim * m || column_points.size() != dim * n)
         throw std::invalid_argument(
           "HierarchicalMatrix: one point per row and per column");
       if (symmetric && row_points != column_points)
@@ -127,8 +154,8 @@ namespace rsfcycle
       hmat_assemble_context_t context;
       hmat_assemble_context_init(&context);
       context.compression     = hmat_create_compression_aca_plus(tolerance);
-      context.simple_compute  = entry;
-      context.user_context    = const_cast<dealii::FullMatrix<double> *>(&A);
+      context.simple_compute  = entry_of;
+      context.user_context    = const_cast<Entry *>(&entry);
       context.lower_symmetric = symmetric ? 1 : 0;
       context.progress        = nullptr;
       const int error         = hmat.assemble_generic(data->matrix, &context);
@@ -136,8 +163,8 @@ namespace rsfcycle
       if (error != 0)
         throw fail("the assembly");
       hmat.get_info(data->matrix, &data->info);
-      data->x.resize(A.n());
-      data->y.resize(A.m());
+      data->x.resize(n);
+      data->y.resize(m);
     }
 
 
@@ -145,7 +172,7 @@ namespace rsfcycle
 
 
     void
-    HierarchicalMatrix::vmult(const double *x, double *y) const
+    HierarchicalMatrix::vmult(const double *x, double *y, const bool add) const
     {
       for (unsigned int k = 0; k < data->x.size(); ++k)
         data->x[k] = x[data->column_order[k]];
@@ -161,7 +188,29 @@ namespace rsfcycle
                                  1) != 0)
         throw std::runtime_error("hmat-oss: the product failed");
       for (unsigned int k = 0; k < data->y.size(); ++k)
-        y[data->row_order[k]] = data->y[k];
+        y[data->row_order[k]] = (add ? y[data->row_order[k]] : 0.) + data->y[k];
+    }
+
+
+    void
+    HierarchicalMatrix::Tvmult(const double *x, double *y, const bool add) const
+    {
+      for (unsigned int k = 0; k < data->y.size(); ++k)
+        data->y[k] = x[data->row_order[k]];
+      const double one = 1, zero = 0;
+      if (interface().gemm_dense('T',
+                                 'N',
+                                 'L',
+                                 &one,
+                                 data->matrix,
+                                 data->y.data(),
+                                 &zero,
+                                 data->x.data(),
+                                 1) != 0)
+        throw std::runtime_error("hmat-oss: the transposed product failed");
+      for (unsigned int k = 0; k < data->x.size(); ++k)
+        y[data->column_order[k]] =
+          (add ? y[data->column_order[k]] : 0.) + data->x[k];
     }
 
 

@@ -85,7 +85,7 @@ check $? "1-rank run"
 check $? "2-rank run"
 same_event two one 1e-6
 check $? "first event on 2 ranks as on 1"
-rows=$(sed -n 's/.*(\([0-9]*\) rows on rank 0 of 2).*/\1/p' two.log)
+rows=$(sed -n 's/.*(\([0-9]*\) rows on rank 0 of 2[);].*/\1/p' two.log)
 nodes=$(sed -n 's/.*operator \([0-9]*\) x .*/\1/p' two.log)
 [ -n "$rows" ] && [ "$rows" -lt "$nodes" ]
 check $? "rank 0 holds $rows of $nodes rows"

@@ -325,6 +325,12 @@ namespace rsfcycle
       std::uint32_t fingerprint = 0;
       /** The H-matrix product's relative error on two test slips. */
       double compression_error = 0;
+      /**
+       * The H-matrices of S on all ranks together: their numbers as a
+       * fraction of S's n_c^2, their low-rank and dense blocks.
+       */
+      double      compressed_fraction = 0;
+      std::size_t low_rank_blocks = 0, dense_blocks = 0;
       /** The memory of S during the run, the largest over the ranks [MB]. */
       double operator_megabytes = 0;
       /** Per own node: radiation damping eta w [N s/m^dim]. */

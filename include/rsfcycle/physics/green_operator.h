@@ -39,7 +39,8 @@ namespace rsfcycle
      * them as the columns K_II^-1 K_Ic of its nodes, with a CHOLMOD factor
      * of the whole K_II on every rank, `block_size` right-hand sides at a
      * time), and all of O, o0, o1. The rows are kept dense or, after
-     * compress(), as an H-matrix (solvers::HierarchicalMatrix).
+     * compress(), as H-matrices (solvers::HierarchicalMatrix) of the ranks'
+     * parts of S's lower triangle.
      */
     struct GreenOperator
     {
@@ -74,9 +75,26 @@ namespace rsfcycle
       unsigned int n_blocks          = 0; // multi-RHS solves
       /** The Cholesky factor's size (one per node), for the log. */
       double factor_megabytes = 0;
-      /** The rows of S (and of N) as H-matrices, once compress() has run. */
+      /**
+       * S as H-matrices, once compress() has run, split among the ranks as
+       * its lower triangle: this rank's product rows P = product_begin ...
+       * product_end - 1 (not its own rows: chosen so that every rank's
+       * share of the triangle is the same), `compressed` the diagonal block
+       * S(P, P) (symmetric, its lower triangle stored) and
+       * `compressed_left` the block left of it, S(P, 0 ... product_begin -
+       * 1) (none on the first rank), applied as stored and transposed (S
+       * symmetric: the transposed block is the rows above P right of the
+       * diagonal). On one rank P is all rows: the lower triangle of S.
+       * `compressed_normal`: this rank's own rows of N.
+       */
       std::shared_ptr<const solvers::HierarchicalMatrix> compressed,
-        compressed_normal;
+        compressed_left, compressed_normal;
+      unsigned int product_begin = 0, product_end = 0;
+      /** Every rank's number of own rows (the products' reduce-scatter). */
+      std::vector<int> row_counts;
+      MPI_Comm         communicator = MPI_COMM_SELF;
+      /** The product's sum over all rows before the reduce-scatter. */
+      mutable std::vector<double> product_work;
 
       unsigned int
       n_contact() const
@@ -91,13 +109,31 @@ namespace rsfcycle
       }
 
       /**
-       * force = this rank's rows of S times slip (all n_c nodes): the
-       * H-matrix's product if S is compressed, else each row a vectorised
-       * dot product (3 - 8 times FullMatrix::vmult, whose one running sum
-       * serialises the adds; benchmarks/green-function/README.md).
+       * force = this rank's rows of S times slip (all n_c nodes). If S is
+       * compressed, collective: each rank applies its part of the triangle
+       * (the diagonal block, the left block and its transpose) and the
+       * ranks' sums are reduced onto the own rows (MPI_Reduce_scatter);
+       * else each own row a vectorised dot product (3 - 8 times
+       * FullMatrix::vmult, whose one running sum serialises the adds;
+       * benchmarks/green-function/README.md).
        */
       void
       apply(const double *slip, double *force) const;
+
+      /** Whether compress() has run (S's products are then collective). */
+      bool
+      is_compressed() const
+      {
+        return !row_counts.empty();
+      }
+
+      /** Numbers and blocks this rank's H-matrices of S hold. */
+      std::size_t
+      stored_entries() const;
+      std::size_t
+      n_low_rank_blocks() const;
+      std::size_t
+      n_dense_blocks() const;
 
       /**
        * With the normal coupling: force = n0 + t n1 + N slip for this
@@ -107,19 +143,22 @@ namespace rsfcycle
       apply_normal(const double *slip, double t, double *force) const;
 
       /**
-       * Compress this rank's rows of S as an H-matrix of relative tolerance
-       * `tolerance` (symmetric storage on one rank), node k at the point
-       * (points[dim k], ...) for all n_c nodes, and return the largest
-       * relative error (2-norm) of the compressed product against the
-       * dense one for two test slips (uniform, and pseudo-random), over
-       * this rank's rows; N too (not symmetric), the error the larger of
-       * the two, unless it is negligible (normal_negligible). S and N stay
-       * until release_dense().
+       * Collectively, compress S's lower triangle as H-matrices of relative
+       * tolerance `tolerance`, split among the ranks of `communicator`
+       * (above; the rows of S a rank's product rows need from other ranks
+       * are sent to it), node k at the point (points[dim k], ...) for all
+       * n_c nodes, and return the largest relative error (2-norm) of the
+       * compressed product against the dense one for two test slips
+       * (uniform, and pseudo-random), over this rank's rows; this rank's
+       * rows of N too (not symmetric), the error the larger of the two,
+       * unless N is negligible (normal_negligible). S and N stay until
+       * release_dense().
        */
       double
       compress(const std::vector<double> &points,
                unsigned int               dim,
-               double                     tolerance);
+               double                     tolerance,
+               MPI_Comm                   communicator);
 
       /** Free the dense S and N once they are compressed and written. */
       void

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <deal.II/lac/full_matrix.h>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -27,13 +28,25 @@ namespace rsfcycle
     {
     public:
       /**
-       * Compress the m x n matrix A whose row i belongs to the point
-       * (row_points[dim i], ..., row_points[dim i + dim - 1]) and column j to
-       * the point of column_points; a `symmetric` A (the two lists equal)
-       * has only its lower triangle stored. The entries are
-       * read through A(i, j); A is not kept. Throws std::runtime_error if
-       * hmat-oss fails.
+       * Compress the m x n matrix whose entry (i, j) is `entry(i, j)`, row
+       * i belonging to the point (row_points[dim i], ...,
+       * row_points[dim i + dim - 1]) and column j to the point of
+       * column_points; a `symmetric` matrix (the two lists equal) has only
+       * its lower triangle read and stored. `entry` is not kept. Throws
+       * std::runtime_error if hmat-oss fails.
        */
+      HierarchicalMatrix(
+        unsigned int                                             m,
+        unsigned int                                             n,
+        const std::function<double(unsigned int, unsigned int)> &entry,
+        const std::vector<double>                               &row_points,
+        const std::vector<double>                               &column_points,
+        unsigned int                                             dim,
+        double                                                   tolerance,
+        bool                                                     symmetric,
+        unsigned int                                             leaf_size = 32,
+        double                                                   eta = 2.);
+      /** The same for the entries of a dense A (A(i, j)). */
       HierarchicalMatrix(const dealii::FullMatrix<double> &A,
                          const std::vector<double>        &row_points,
                          const std::vector<double>        &column_points,
@@ -47,9 +60,16 @@ namespace rsfcycle
       HierarchicalMatrix &
       operator=(const HierarchicalMatrix &) = delete;
 
-      /** y = A x (x of length n, y of length m, in the points' order). */
+      /**
+       * y = A x, or y += A x if `add` (x of length n, y of length m, in the
+       * points' order).
+       */
       void
-      vmult(const double *x, double *y) const;
+      vmult(const double *x, double *y, bool add = false) const;
+
+      /** y = A^T x, or y += A^T x if `add` (x of length m, y of length n). */
+      void
+      Tvmult(const double *x, double *y, bool add = false) const;
 
       unsigned int
       m() const;

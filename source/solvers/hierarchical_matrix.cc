@@ -174,43 +174,45 @@ namespace rsfcycle
     void
     HierarchicalMatrix::vmult(const double *x, double *y, const bool add) const
     {
-      for (unsigned int k = 0; k < data->x.size(); ++k)
-        data->x[k] = x[data->column_order[k]];
-      const double one = 1, zero = 0;
-      if (interface().gemm_dense('N',
-                                 'N',
-                                 'L',
-                                 &one,
-                                 data->matrix,
-                                 data->x.data(),
-                                 &zero,
-                                 data->y.data(),
-                                 1) != 0)
-        throw std::runtime_error("hmat-oss: the product failed");
-      for (unsigned int k = 0; k < data->y.size(); ++k)
-        y[data->row_order[k]] = (add ? y[data->row_order[k]] : 0.) + data->y[k];
+      product('N', x, y, add);
     }
 
 
     void
     HierarchicalMatrix::Tvmult(const double *x, double *y, const bool add) const
     {
-      for (unsigned int k = 0; k < data->y.size(); ++k)
-        data->y[k] = x[data->row_order[k]];
+      product('T', x, y, add);
+    }
+
+
+    void
+    HierarchicalMatrix::product(const char    transpose,
+                                const double *x,
+                                double       *y,
+                                const bool    add) const
+    {
+      // x and y in the clusterings' orders: A x reads the columns' order
+      // and writes the rows', A^T x the other way round
+      const bool           t   = transpose == 'T';
+      std::vector<double> &in  = t ? data->y : data->x,
+                          &out = t ? data->x : data->y;
+      const int *in_order      = t ? data->row_order : data->column_order,
+                *out_order     = t ? data->column_order : data->row_order;
+      for (unsigned int k = 0; k < in.size(); ++k)
+        in[k] = x[in_order[k]];
       const double one = 1, zero = 0;
-      if (interface().gemm_dense('T',
+      if (interface().gemm_dense(transpose,
                                  'N',
                                  'L',
                                  &one,
                                  data->matrix,
-                                 data->y.data(),
+                                 in.data(),
                                  &zero,
-                                 data->x.data(),
+                                 out.data(),
                                  1) != 0)
-        throw std::runtime_error("hmat-oss: the transposed product failed");
-      for (unsigned int k = 0; k < data->x.size(); ++k)
-        y[data->column_order[k]] =
-          (add ? y[data->column_order[k]] : 0.) + data->x[k];
+        throw std::runtime_error("hmat-oss: the product failed");
+      for (unsigned int k = 0; k < out.size(); ++k)
+        y[out_order[k]] = (add ? y[out_order[k]] : 0.) + out[k];
     }
 
 

@@ -87,6 +87,10 @@ namespace rsfcycle
       n_dense_blocks() const;
 
     private:
+      /** y (+)= op(A) x, op the identity ('N') or the transpose ('T'). */
+      void
+      product(char transpose, const double *x, double *y, bool add) const;
+
       struct Data;
       std::unique_ptr<Data> data;
     };

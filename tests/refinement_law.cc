@@ -14,7 +14,15 @@
 //    finest level, the finest cells stay close to it (within two of their
 //    diameters: one layer and the 2:1 balance), and the band law needs
 //    fewer cells than the centre law at the same finest cell size. The band
-//    law's cell counts pin its meshes.
+//    law's cell counts pin its meshes;
+//  - `Mesh file/Refine zone` (the law switched off by Refinement distance =
+//    0): a zone of n = 2 everywhere makes 16 cells of every coarse cell; a
+//    zone |y| < 8 km, whose edges are coarse vertices (1.6 km cells), refines
+//    exactly the coarse cells whose centre is in it twice (16 cells each, at
+//    level 2) and their vertex neighbours once for the 2:1 balance (4 cells
+//    each, at level 1), counted here from the coarse mesh; an empty zone
+//    leaves the coarse mesh. (The zone is evaluated at every cycle's cells,
+//    so a zone edge inside a coarse cell is followed by its children.)
 #include "tests.h"
 
 #include <cmath>
@@ -23,7 +31,9 @@
 #include <rsfcycle/ids.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/discretisation.h>
+#include <rsfcycle/scenes/registry.h>
 #include <rsfcycle/scenes/wedge.h>
+#include <set>
 
 using namespace dealii;
 using namespace rsfcycle;
@@ -140,6 +150,86 @@ check_mesh(ParameterHandler  &prm,
   return tria.n_global_active_cells();
 }
 
+// The whole-fault mesh with the law off and the given zone: the cells
+// per level against those counted from the coarse mesh.
+void
+check_zone(const std::string &zone, const std::string &label)
+{
+  const std::string source = SOURCE_DIR;
+  ParameterHandler  prm;
+  scenes::declare_parameters(prm);
+  prm.parse_input_from_string(
+    "set Dimension = 2\n"
+    "set Scene = mesh-file\n"
+    "subsection Mesh file\n"
+    "  set File = " +
+    source +
+    "/meshes/whole-fault-2d.msh\n"
+    "  set Boundary roles = 1: contact, 2: load\n"
+    "  set Materials = 10: density 2670, bulk modulus 5.34e10, Poisson "
+    "ratio 0.25, shear viscosity 0, bulk viscosity 0\n"
+    "  set Gravity = 0, 0\n"
+    "  set Load velocity = 0, 1e-9\n"
+    "  set Refine zone = " +
+    zone +
+    "\n"
+    "  subsection Friction\n"
+    "    set a = 0.01\n"
+    "    set b - a = 0.005\n"
+    "    set Normal stress = 50e6\n"
+    "  end\n"
+    "end\n"
+    "subsection Mesh\n"
+    "  set Global refinements = 0\n"
+    "  set Local refinements = 2\n"
+    "  set Refinement distance = 0\n"
+    "end\n");
+  MeshParameters mesh;
+  mesh.parse_parameters(prm);
+  const auto                 scene = scenes::make_scene<2>("mesh-file", prm);
+  physics::Discretisation<2> discretisation(mesh, *scene);
+  discretisation.make_grid();
+  const auto &tria = discretisation.triangulation;
+
+  // the coarse cells in the zone, and their vertex neighbours outside it
+  std::set<unsigned int> zone_vertices;
+  unsigned int           n_coarse = 0, n_zone = 0, n_neighbours = 0;
+  for (const auto &cell : tria.cell_iterators_on_level(0))
+    if (scene->zone_refinements(cell->center()) >= 2)
+      for (const unsigned int v : cell->vertex_indices())
+        zone_vertices.insert(cell->vertex_index(v));
+  for (const auto &cell : tria.cell_iterators_on_level(0))
+    {
+      ++n_coarse;
+      if (scene->zone_refinements(cell->center()) >= 2)
+        ++n_zone;
+      else
+        for (const unsigned int v : cell->vertex_indices())
+          if (zone_vertices.count(cell->vertex_index(v)))
+            {
+              ++n_neighbours;
+              break;
+            }
+    }
+  std::array<unsigned int, 3> per_level      = {{0, 0, 0}};
+  bool                        in_zone_finest = true;
+  for (const auto &cell : tria.active_cell_iterators())
+    {
+      ++per_level[cell->level()];
+      if (scene->zone_refinements(cell->center()) >= 2)
+        in_zone_finest = in_zone_finest && cell->level() == 2;
+    }
+  const bool counts = per_level[2] == 16 * n_zone &&
+                      per_level[1] == 4 * n_neighbours &&
+                      per_level[0] == n_coarse - n_zone - n_neighbours;
+  deallog << "zone " << label << ": " << tria.n_active_cells() << " cells from "
+          << n_coarse << " coarse ones (" << n_zone << " in the zone, "
+          << n_neighbours
+          << " beside it), levels 0/1/2 as counted: " << (counts ? "yes" : "no")
+          << ", cells in the zone at level 2: "
+          << (in_zone_finest ? "yes" : "no") << std::endl;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -161,4 +251,7 @@ main(int argc, char **argv)
   deallog << "2D band law needs fewer cells than the centre law: "
           << (band < centre ? "yes" : "no") << std::endl;
   check_mesh<3>(prm, "band", 0, 3);
+  check_zone("2", "everywhere");
+  check_zone("if(abs(y) < 8e3, 2, 0)", "|y| < 8 km");
+  check_zone("", "empty");
 }

@@ -53,7 +53,9 @@ namespace rsfcycle
      * `band` refines the cells whose bounding box meets the patch widened by
      * the band, and those closer to it than a multiple of their shortest
      * edge. Either way the zone shrinks with the
-     * cell size, so the patch gets the finest cells; deal.II's level
+     * cell size, so the patch gets the finest cells. A scene's zone
+     * (Scene::zone_refinements(), `Mesh file/Refine zone`) is refined in
+     * the cycles below its count whatever the law says. deal.II's level
      * difference limit at vertices (needed by the multigrid) grades the
      * rest 2:1.
      */
@@ -84,7 +86,9 @@ namespace rsfcycle
       for (unsigned int cycle = 0; cycle < mesh.local_refinements; ++cycle)
         {
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() && near_patch(cell))
+            if (cell->is_locally_owned() &&
+                (near_patch(cell) ||
+                 scene.zone_refinements(cell->center()) > cycle))
               cell->set_refine_flag();
           triangulation.execute_coarsening_and_refinement();
           if (scene.split_fault())

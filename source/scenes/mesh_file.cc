@@ -47,6 +47,10 @@ namespace rsfcycle
         refine_where =
           FrictionField<dim>::parse_expression(prm.get("Refine where"),
                                                section + "/Refine where");
+      if (!prm.get("Refine zone").empty())
+        refine_zone =
+          FrictionField<dim>::parse_expression(prm.get("Refine zone"),
+                                               section + "/Refine zone");
       const std::string observation_text = prm.get("Observation points");
       all_components = prm.get("Observation components") == "all";
       prm.enter_subsection("Friction");
@@ -200,6 +204,17 @@ namespace rsfcycle
                                      const double            margin) const
     {
       return patch.distance(box, margin);
+    }
+
+
+    template <int dim>
+    unsigned int
+    MeshFile<dim>::zone_refinements(const Point<dim> &cell_center) const
+    {
+      if (!refine_zone)
+        return 0;
+      const double n = refine_zone->value(to_physical(cell_center));
+      return n > 0 ? static_cast<unsigned int>(std::floor(n + 0.5)) : 0;
     }
 
 

@@ -182,6 +182,17 @@ namespace rsfcycle
           "function of x, y (and z in 3D) [m] is > 0. Empty: where the "
           "fault is rate weakening, b - a > 0");
         prm.declare_entry(
+          "Refine zone",
+          "",
+          Patterns::Anything(),
+          "A part of the body refined whatever the refinement law says: a "
+          "cell whose centre has this function of x, y (and z in 3D) [m] "
+          "equal to n >= 1 (rounded) is refined in the first n of "
+          "Mesh/Local refinements, so its cells are 2^-n of the coarse "
+          "mesh's (a uniform zone, e.g. if(x < 10e3 & y > -45e3, 5, 0)); "
+          "deal.II grades the cells around it 2:1. Empty or <= 0: no zone "
+          "[number of refinements]");
+        prm.declare_entry(
           "Boundary roles",
           "",
           Patterns::Anything(),

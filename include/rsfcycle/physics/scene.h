@@ -71,6 +71,17 @@ namespace rsfcycle
       distance_to_patch(const BoundingBox<dim> &box, double margin) const = 0;
 
       /**
+       * How many local refinements a cell with this centre gets whatever
+       * the refinement law says: Discretisation::make_grid() refines it in
+       * the cycles k < this number. By default none.
+       */
+      virtual unsigned int
+      zone_refinements(const Point<dim> &) const
+      {
+        return 0;
+      }
+
+      /**
        * The region (material id) of a cell (on any level) with the given
        * centre; `mesh_id` is the id the cell has from the coarse mesh (a
        * mesh file's volume tag, inherited by the children).

@@ -54,6 +54,8 @@ namespace rsfcycle
       double
       distance_to_patch(const BoundingBox<dim> &box,
                         double                  margin) const override;
+      unsigned int
+      zone_refinements(const Point<dim> &cell_center) const override;
       types::material_id
       material_id(const Point<dim>  &cell_center,
                   types::material_id mesh_id) const override;
@@ -137,6 +139,7 @@ namespace rsfcycle
       Tensor<1, dim>                         g, up, load_velocity;
       /** `Refine where` (null: b - a > 0). */
       std::shared_ptr<const Function<dim>> refine_where;
+      std::shared_ptr<const Function<dim>> refine_zone;
       /** Displacement = antiplane: load_velocity[0] is out of the plane. */
       bool antiplane = false;
       /** `Contact normal = free`. */

@@ -42,6 +42,13 @@ namespace rsfcycle
         bulk + "Solver/Dynamics = quasi-dynamic (this run has " +
         name_of(solver.dynamics) +
         ": inertia or no radiation damping is no Green's function ODE)");
+    if (solver.green_single_precision &&
+        solver.green_compression_tolerance < 1e-5)
+      throw std::invalid_argument(
+        "Solver/Green compression precision = single: needs Green "
+        "compression tolerance >= 1e-5 (this run has " +
+        format_number(solver.green_compression_tolerance) +
+        "; a float holds about 7 digits)");
     if (!green && !solver.green_operator_file.empty())
       throw std::invalid_argument(
         "Solver/Green operator file = " + solver.green_operator_file +

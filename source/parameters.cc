@@ -325,6 +325,17 @@ namespace rsfcycle
       "log reports it for two test slips). 1e-6 changes BP1-QD's event "
       "times by less than 1e-4 relative (benchmarks/green-function)");
     prm.declare_entry(
+      "Green compression precision",
+      "double",
+      Selection("double|single"),
+      "Solver/Bulk = green-function with an H-matrix: the numbers the "
+      "H-matrix stores and its product's arithmetic. double; single: "
+      "computed in double, stored in float, for half the memory and a "
+      "product about twice as fast once the H-matrix outgrows the caches "
+      "(BP5 at 500 m; benchmarks/seas-bp5), at a rounding error of about "
+      "1e-7 per number, so it needs Green compression tolerance >= 1e-5 "
+      "[-]");
+    prm.declare_entry(
       "Theta",
       "0.5",
       Double(0.5, 1),
@@ -435,9 +446,10 @@ namespace rsfcycle
     green_storage =
       Choice<GreenStorage>::parse(prm.get("Green operator storage"));
     green_compression_tolerance = prm.get_double("Green compression tolerance");
-    theta                       = prm.get_double("Theta");
-    spectral_radius             = prm.get_double("Spectral radius");
-    fixed_point_tolerance       = prm.get_double("Fixed-point tolerance");
+    green_single_precision = prm.get("Green compression precision") == "single";
+    theta                  = prm.get_double("Theta");
+    spectral_radius        = prm.get_double("Spectral radius");
+    fixed_point_tolerance  = prm.get_double("Fixed-point tolerance");
     max_fixed_point_iterations =
       prm.get_integer("Maximum fixed-point iterations");
     linear_correction =

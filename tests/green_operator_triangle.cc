@@ -19,7 +19,12 @@
 //  - all ranks together store less than the dense triangle n (n + 1) / 2;
 //  - solvers::HierarchicalMatrix's transposed product (Tvmult) of a
 //    non-symmetric 300 x 500 block equals the dense A^T x to 1e-6, and
-//    vmult and Tvmult with `add` add to what y held.
+//    vmult and Tvmult with `add` add to what y held;
+//  - in single precision (tolerance 1e-5): apply() equals the dense S x to
+//    3e-5 (the tolerance and float rounding), the reported error is below
+//    3e-5, and the ranks store the same numbers as in double precision
+//    compressed to 1e-5 in half the bytes (the blocks are compressed in
+//    double either way).
 #include "tests.h"
 
 #include <cmath>
@@ -76,42 +81,53 @@ main(int argc, char **argv)
   const unsigned int                           first  = splits[ranks - 1][rank],
                      m = splits[ranks - 1][rank + 1] - first;
 
-  physics::GreenOperator op;
-  op.S.reinit(m, n);
+  // this rank's rows of S, compressed; and apply() against the dense
+  // rows for two slips (the 2-norm over all ranks relative to that of S x)
+  dealii::FullMatrix<double> dense(m, n);
   for (unsigned int i = 0; i < m; ++i)
     for (unsigned int j = 0; j < n; ++j)
-      op.S(i, j) = kernel(points, first + i, points, j);
-  op.g0.reinit(m);
-  op.g1.reinit(m);
-  op.n_nodes                             = n;
-  op.first_row                           = first;
-  const dealii::FullMatrix<double> dense = op.S;
-  const double reported = op.compress(points, 2, 1e-8, MPI_COMM_WORLD);
+      dense(i, j) = kernel(points, first + i, points, j);
+  using Precision  = solvers::HierarchicalMatrix::Precision;
+  const auto setup = [&](physics::GreenOperator &op,
+                         const double            tolerance,
+                         const Precision         precision) {
+    op.S = dense;
+    op.g0.reinit(m);
+    op.g1.reinit(m);
+    op.n_nodes   = n;
+    op.first_row = first;
+    return op.compress(points, 2, tolerance, MPI_COMM_WORLD, precision);
+  };
+  const auto products_within = [&](const physics::GreenOperator &op,
+                                   const double                  bound) {
+    bool within = true;
+    for (unsigned int test = 0; test < 2; ++test)
+      {
+        std::vector<double> x(n), y(m);
+        for (unsigned int j = 0; j < n; ++j)
+          x[j] = test == 0 ? 1. : std::sin(0.37 * j) + std::cos(0.011 * j);
+        op.apply(x.data(), y.data());
+        double difference = 0, norm = 0;
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            double exact = 0;
+            for (unsigned int j = 0; j < n; ++j)
+              exact += dense(i, j) * x[j];
+            difference += (y[i] - exact) * (y[i] - exact);
+            norm += exact * exact;
+          }
+        difference = Utilities::MPI::sum(difference, MPI_COMM_WORLD);
+        norm       = Utilities::MPI::sum(norm, MPI_COMM_WORLD);
+        within     = within && std::sqrt(difference) <= bound * std::sqrt(norm);
+      }
+    return within;
+  };
 
-  // the product against the dense rows, over all ranks
-  bool products = true;
-  for (unsigned int test = 0; test < 2; ++test)
-    {
-      std::vector<double> x(n), y(m);
-      for (unsigned int j = 0; j < n; ++j)
-        x[j] = test == 0 ? 1. : std::sin(0.37 * j) + std::cos(0.011 * j);
-      op.apply(x.data(), y.data());
-      double difference = 0, norm = 0;
-      for (unsigned int i = 0; i < m; ++i)
-        {
-          double exact = 0;
-          for (unsigned int j = 0; j < n; ++j)
-            exact += dense(i, j) * x[j];
-          difference += (y[i] - exact) * (y[i] - exact);
-          norm += exact * exact;
-        }
-      difference = Utilities::MPI::sum(difference, MPI_COMM_WORLD);
-      norm       = Utilities::MPI::sum(norm, MPI_COMM_WORLD);
-      products   = products && std::sqrt(difference) <= 1e-6 * std::sqrt(norm);
-    }
+  physics::GreenOperator op;
+  const double reported = setup(op, 1e-8, Precision::double_precision);
   deallog << "apply() equals the dense S x on the own rows to 1e-6 (two "
              "slips): "
-          << yes(products) << std::endl;
+          << yes(products_within(op, 1e-6)) << std::endl;
   deallog << "reported product error below 1e-6: " << yes(reported < 1e-6)
           << std::endl;
 
@@ -173,6 +189,21 @@ main(int argc, char **argv)
     deallog << "the transposed product of a 300 x 500 block equals A^T x, "
                "and add adds: "
             << yes(transposed) << std::endl;
+  }
+
+  // single precision against double, both at 1e-5
+  {
+    physics::GreenOperator single, twin;
+    const double           reported_single =
+      setup(single, 1e-5, Precision::single_precision);
+    setup(twin, 1e-5, Precision::double_precision);
+    deallog << "single precision: apply() equals the dense S x to 3e-5: "
+            << yes(products_within(single, 3e-5))
+            << ", reported error below 3e-5: " << yes(reported_single < 3e-5)
+            << ", the same numbers as double in half the bytes: "
+            << yes(single.stored_entries() == twin.stored_entries() &&
+                   2 * single.memory_consumption() == twin.memory_consumption())
+            << std::endl;
   }
   return 0;
 }

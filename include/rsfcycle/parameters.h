@@ -181,6 +181,8 @@ namespace rsfcycle
     GreenStorage green_storage = GreenStorage::automatic;
     /** Relative tolerance of the H-matrix compression (ACA+). */
     double green_compression_tolerance = 1e-6;
+    /** Whether the H-matrix stores floats (`Green compression precision`). */
+    bool green_single_precision = false;
     /** The time scheme's name; time/schemes.h makes it. */
     std::string time_scheme = "theta";
     double      theta       = 0.5;

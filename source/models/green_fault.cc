@@ -247,10 +247,14 @@ namespace rsfcycle
                 for (unsigned int d = 0; d < dim; ++d)
                   points.push_back(contact.nodes()[k].position[d]);
             compression_error = Utilities::MPI::max(
-              op.compress(la::all_gather(communicator, points),
-                          dim,
-                          parameters.solver.green_compression_tolerance,
-                          communicator),
+              op.compress(
+                la::all_gather(communicator, points),
+                dim,
+                parameters.solver.green_compression_tolerance,
+                communicator,
+                parameters.solver.green_single_precision ?
+                  solvers::HierarchicalMatrix::Precision::single_precision :
+                  solvers::HierarchicalMatrix::Precision::double_precision),
               communicator);
             compressed_fraction =
               Utilities::MPI::sum(double(op.stored_entries()), communicator) /
@@ -262,14 +266,15 @@ namespace rsfcycle
           }
         // what the run keeps of S on the rank that keeps most
         // (and of N, with a split fault's normal coupling)
-        const double dense = double(op.n_rows()) * op.n_contact();
+        const double dense = 8. * op.n_rows() * op.n_contact();
         operator_megabytes = Utilities::MPI::max(
-          8e-6 * ((op.is_compressed() ? double(op.stored_entries()) : dense) +
-                  (op.normal_coupling && !op.normal_negligible ?
-                     (op.compressed_normal ?
-                        double(op.compressed_normal->stored_entries()) :
-                        dense) :
-                     0.)),
+          1e-6 *
+            ((op.is_compressed() ? double(op.memory_consumption()) : dense) +
+             (op.normal_coupling && !op.normal_negligible ?
+                (op.compressed_normal ?
+                   double(op.compressed_normal->memory_consumption()) :
+                   dense) :
+                0.)),
           communicator);
       }
 

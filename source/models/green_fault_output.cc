@@ -237,6 +237,9 @@ namespace rsfcycle
       if (op.is_compressed())
         log << " as an H-matrix (tolerance "
             << parameters.solver.green_compression_tolerance
+            << (parameters.solver.green_single_precision ?
+                  ", stored in single precision" :
+                  "")
             << ", its lower triangle: "
             << format_number(100. * compressed_fraction)
             << " % of the dense numbers, " << low_rank_blocks
@@ -263,10 +266,10 @@ namespace rsfcycle
         log << ", the slip's normal stress change " << op.n_rows() << " x "
             << op.n_contact()
             << (op.compressed_normal ? " as an H-matrix (" : " dense (")
-            << format_number(8e-6 *
-                             (op.compressed_normal ?
-                                double(op.compressed_normal->stored_entries()) :
-                                double(op.n_rows()) * op.n_contact()))
+            << format_number(
+                 1e-6 * (op.compressed_normal ?
+                           double(op.compressed_normal->memory_consumption()) :
+                           8. * op.n_rows() * op.n_contact()))
             << " MB)";
       log << ", " << op.O.m() << " observation rows ";
       if (operator_source.empty())

@@ -176,24 +176,26 @@ namespace rsfcycle
       if (is_compressed())
         {
           // this rank's part of the triangle: S(P, P) x_P and S(P, L) x_L
-          // on the rows P, S(P, L)^T x_P on the rows L left of them
-          auto &z = product_work;
-          z.assign(n_nodes, 0.);
+          // on the rows P, S(P, L)^T x_P on the rows L left of them (on
+          // one rank straight into force, which then holds every row)
+          const bool one_rank = row_counts.size() == 1;
+          if (!one_rank)
+            product_work.resize(n_nodes);
+          double *z = one_rank ? force : product_work.data();
+          std::fill(z, z + n_nodes, 0.);
           if (compressed)
-            compressed->vmult(slip + product_begin, z.data() + product_begin);
+            compressed->vmult(slip + product_begin, z + product_begin);
           if (compressed_left)
             {
-              compressed_left->vmult(slip, z.data() + product_begin, true);
-              compressed_left->Tvmult(slip + product_begin, z.data(), true);
+              compressed_left->vmult(slip, z + product_begin, true);
+              compressed_left->Tvmult(slip + product_begin, z, true);
             }
-          if (row_counts.size() == 1)
-            std::copy(z.begin(), z.end(), force);
-          else if (MPI_Reduce_scatter(z.data(),
-                                      force,
-                                      row_counts.data(),
-                                      MPI_DOUBLE,
-                                      MPI_SUM,
-                                      communicator) != MPI_SUCCESS)
+          if (!one_rank && MPI_Reduce_scatter(z,
+                                              force,
+                                              row_counts.data(),
+                                              MPI_DOUBLE,
+                                              MPI_SUM,
+                                              communicator) != MPI_SUCCESS)
             throw std::runtime_error("the product with S: MPI failed");
           return;
         }
@@ -254,6 +256,14 @@ namespace rsfcycle
 
 
     std::size_t
+    GreenOperator::memory_consumption() const
+    {
+      return (compressed ? compressed->memory_consumption() : 0) +
+             (compressed_left ? compressed_left->memory_consumption() : 0);
+    }
+
+
+    std::size_t
     GreenOperator::n_dense_blocks() const
     {
       return (compressed ? compressed->n_dense_blocks() : 0) +
@@ -262,10 +272,12 @@ namespace rsfcycle
 
 
     double
-    GreenOperator::compress(const std::vector<double> &points,
-                            const unsigned int         dim,
-                            const double               tolerance,
-                            const MPI_Comm             mpi_communicator)
+    GreenOperator::compress(
+      const std::vector<double>                   &points,
+      const unsigned int                           dim,
+      const double                                 tolerance,
+      const MPI_Comm                               mpi_communicator,
+      const solvers::HierarchicalMatrix::Precision precision)
     {
       communicator = mpi_communicator;
       // (n_nodes, not S.n(): a rank without contact nodes has an empty S,
@@ -366,7 +378,8 @@ namespace rsfcycle
             product_points,
             dim,
             tolerance,
-            true);
+            true,
+            precision);
         if (n_product > 0 && product_begin > 0)
           compressed_left = std::make_shared<const solvers::HierarchicalMatrix>(
             n_product,
@@ -378,7 +391,8 @@ namespace rsfcycle
             points_of(0, product_begin),
             dim,
             tolerance,
-            false);
+            false,
+            precision);
       };
 
       // The product rows, so that the ranks hold equal shares of the
@@ -437,7 +451,7 @@ namespace rsfcycle
         normal_coupling && N.frobenius_norm() <= 1e-10 * S.frobenius_norm();
       if (normal_coupling && !normal_negligible)
         compressed_normal = std::make_shared<const solvers::HierarchicalMatrix>(
-          N, rows, points, dim, tolerance, false);
+          N, rows, points, dim, tolerance, false, precision);
       std::vector<double> x(n), dense(m), h(m);
       double              error = 0;
       // (the product with S is collective: every rank runs both tests)

@@ -1,10 +1,12 @@
 // A matrix of point interactions compressed by hmat-oss
 // (solvers/hierarchical_matrix.h).
+#include <algorithm>
 #include <functional>
 #include <hmat/hmat.h>
 #include <rsfcycle/solvers/hierarchical_matrix.h>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace rsfcycle
 {
@@ -12,23 +14,29 @@ namespace rsfcycle
   {
     namespace
     {
-      // hmat-oss's double-precision interface, initialised once
+      // hmat-oss's interface of a precision, each initialised once
       hmat_interface_t &
-      interface()
+      interface(const HierarchicalMatrix::Precision precision)
       {
-        static hmat_interface_t hmat = [] {
+        const auto make = [](const hmat_value_t type) {
           hmat_interface_t h;
-          hmat_init_default_interface(&h, HMAT_DOUBLE_PRECISION);
+          hmat_init_default_interface(&h, type);
           if (h.init() != 0)
             throw std::runtime_error("hmat-oss: initialisation failed");
           return h;
-        }();
-        return hmat;
+        };
+        static hmat_interface_t hmat_double = make(HMAT_DOUBLE_PRECISION);
+        static hmat_interface_t hmat_single = make(HMAT_SIMPLE_PRECISION);
+        return precision == HierarchicalMatrix::Precision::single_precision ?
+                 hmat_single :
+                 hmat_double;
       }
 
       using Entry = std::function<double(unsigned int, unsigned int)>;
 
-      // the entry callback of the assembly: (i, j) in the original order
+      // the entry callback of the assembly: (i, j) in the original order;
+      // hmat-oss asks for a double in either precision (it compresses in
+      // double and stores in the matrix's precision)
       void
       entry_of(void *context, const int i, const int j, void *result)
       {
@@ -40,6 +48,7 @@ namespace rsfcycle
 
     struct HierarchicalMatrix::Data
     {
+      Precision            precision = Precision::double_precision;
       hmat_cluster_tree_t *rows = nullptr, *columns = nullptr;
       hmat_matrix_t       *matrix = nullptr;
       // the clusterings' orders: position k holds original index order[k]
@@ -48,11 +57,13 @@ namespace rsfcycle
       // x and y in the clusterings' orders (the product is not const in
       // hmat-oss's interface)
       mutable std::vector<double> x, y;
+      // the same in single precision
+      mutable std::vector<float> x_single, y_single;
 
       ~Data()
       {
         if (matrix != nullptr)
-          interface().destroy(matrix);
+          interface(precision).destroy(matrix);
         if (columns != nullptr && columns != rows)
           hmat_delete_cluster_tree(columns);
         if (rows != nullptr)
@@ -92,6 +103,7 @@ namespace rsfcycle
       const unsigned int                dim,
       const double                      tolerance,
       const bool                        symmetric,
+      const Precision                   precision,
       const unsigned int                leaf_size,
       const double                      eta)
       : HierarchicalMatrix(
@@ -103,6 +115,7 @@ namespace rsfcycle
           dim,
           tolerance,
           symmetric,
+          precision,
           leaf_size,
           eta)
     {}
@@ -117,11 +130,13 @@ namespace rsfcycle
       const unsigned int         dim,
       const double               tolerance,
       const bool                 symmetric,
+      const Precision            precision,
       const unsigned int         leaf_size,
       const double               eta)
       : data(std::make_unique<Data>())
     {
-      auto      &hmat = interface();
+      data->precision = precision;
+      auto      &hmat = interface(precision);
       const auto fail = [](const std::string &what) {
         return std::runtime_error("hmat-oss: " + what + " failed");
       };
@@ -165,6 +180,11 @@ namespace rsfcycle
       hmat.get_info(data->matrix, &data->info);
       data->x.resize(n);
       data->y.resize(m);
+      if (precision == Precision::single_precision)
+        {
+          data->x_single.resize(n);
+          data->y_single.resize(m);
+        }
     }
 
 
@@ -200,17 +220,32 @@ namespace rsfcycle
                 *out_order     = t ? data->column_order : data->row_order;
       for (unsigned int k = 0; k < in.size(); ++k)
         in[k] = x[in_order[k]];
-      const double one = 1, zero = 0;
-      if (interface().gemm_dense(transpose,
-                                 'N',
-                                 'L',
-                                 &one,
-                                 data->matrix,
-                                 in.data(),
-                                 &zero,
-                                 out.data(),
-                                 1) != 0)
-        throw std::runtime_error("hmat-oss: the product failed");
+      const auto gemm = [&](auto &in_p, auto &out_p) {
+        using Number     = typename std::decay_t<decltype(in_p)>::value_type;
+        const Number one = 1, zero = 0;
+        const int    error = interface(data->precision)
+                            .gemm_dense(transpose,
+                                        'N',
+                                        'L',
+                                        &one,
+                                        data->matrix,
+                                        in_p.data(),
+                                        &zero,
+                                        out_p.data(),
+                                        1);
+        if (error != 0)
+          throw std::runtime_error("hmat-oss: the product failed");
+      };
+      if (data->precision == Precision::single_precision)
+        {
+          std::vector<float> &in_single  = t ? data->y_single : data->x_single,
+                             &out_single = t ? data->x_single : data->y_single;
+          std::copy(in.begin(), in.end(), in_single.begin());
+          gemm(in_single, out_single);
+          std::copy(out_single.begin(), out_single.end(), out.begin());
+        }
+      else
+        gemm(in, out);
       for (unsigned int k = 0; k < out.size(); ++k)
         y[out_order[k]] = (add ? y[out_order[k]] : 0.) + out[k];
     }
@@ -227,6 +262,15 @@ namespace rsfcycle
     HierarchicalMatrix::n() const
     {
       return data->x.size();
+    }
+
+
+    std::size_t
+    HierarchicalMatrix::memory_consumption() const
+    {
+      return stored_entries() *
+             (data->precision == Precision::single_precision ? sizeof(float) :
+                                                               sizeof(double));
     }
 
 

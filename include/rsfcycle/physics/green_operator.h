@@ -130,6 +130,9 @@ namespace rsfcycle
       /** Numbers and blocks this rank's H-matrices of S hold. */
       std::size_t
       stored_entries() const;
+      /** Bytes of those numbers. */
+      std::size_t
+      memory_consumption() const;
       std::size_t
       n_low_rank_blocks() const;
       std::size_t
@@ -144,7 +147,8 @@ namespace rsfcycle
 
       /**
        * Collectively, compress S's lower triangle as H-matrices of relative
-       * tolerance `tolerance`, split among the ranks of `communicator`
+       * tolerance `tolerance`, stored in `precision`, split among the
+       * ranks of `communicator`
        * (above; the rows of S a rank's product rows need from other ranks
        * are sent to it), node k at the point (points[dim k], ...) for all
        * n_c nodes, and return the largest relative error (2-norm) of the
@@ -155,10 +159,12 @@ namespace rsfcycle
        * release_dense().
        */
       double
-      compress(const std::vector<double> &points,
-               unsigned int               dim,
-               double                     tolerance,
-               MPI_Comm                   communicator);
+      compress(const std::vector<double>             &points,
+               unsigned int                           dim,
+               double                                 tolerance,
+               MPI_Comm                               communicator,
+               solvers::HierarchicalMatrix::Precision precision =
+                 solvers::HierarchicalMatrix::Precision::double_precision);
 
       /** Free the dense S and N once they are compressed and written. */
       void

@@ -88,6 +88,7 @@ def main():
          "parameterfromfile T", "parameter_file bp3_param.dat", "parameter_file_ncol 1",
          "b %g" % P['b'], "dc %g" % P['L'], "f0 %g" % P['f0'], "vref %g" % P['V0'], "a %g" % P['amax'],
          "evlaw aging",
+         "pressurediffusion F",   # HBI leaves it uninitialised (../../seas-bp5/peer/bp5_input.py)
          # HBI's tau is the frictional strength tau0 + dtau - eta V: start it at tau0 - eta Vinit
          # (normal faulting: tau_el0 = -tau0 and V = -Vinit, so tauinit = -(tau0 - eta Vinit))
          "tauinit %.17g" % (sg * (tau0 - eta * P['Vinit'])), "sigmainit %g" % P['sigma'],

@@ -108,6 +108,11 @@ def main():
         "parameterfromfile T", 'parameter_file "bp5_param.dat"', "parameter_file_ncol 4",
         "sigmaconst T", "sigmainit 25.0", "b 0.03", "f0 0.6", "vref 1e-6",
         "evlaw aging", "restart F",
+        # HBI 29b8f905 never initialises pressurediffusion: without this line
+        # its value is whatever the stack holds, and at 0.8, 1.25 and 2 km
+        # cells it was true (a pore-pressure solve, "Maximum iteration", and
+        # the Runge-Kutta failing in its first step)
+        "pressurediffusion F",
     ] + ["outloc %d" % k for k in ids]
     open(os.path.join(a.out, "bp5.in"), "w").write("\n".join(lines) + "\n")
     print("HBI input in %s: %d x %d cells of %g km, %d station cells" % (a.out, imax, jmax, ds, len(ids)))

@@ -151,7 +151,7 @@ def main():
         "parameterfromfile T", 'parameter_file "bp4_param.dat"', "parameter_file_ncol 4",
         "sigmaconst T", "sigmainit 50.0", "b 0.013", "f0 0.6", "vref 1e-6",
         "evlaw aging", "restart F",
-        "pressurediffusion F",     # HBI leaves it uninitialised (../seas-bp5/peer/bp5_input.py)
+        "pressurediffusion F",     # HBI leaves it uninitialised (../../seas-bp5/peer/bp5_input.py)
     ] + ["outloc %d" % k for k in ids]
     open(os.path.join(a.out, "bp4.in"), "w").write("\n".join(lines) + "\n")
     print("HBI input in %s: %d x %d cells of %g km; nucleation square: %d cells inside, %d cut by its edge "

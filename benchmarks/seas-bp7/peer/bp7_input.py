@@ -108,7 +108,7 @@ def main():
         "parameterfromfile T", 'parameter_file "bp7_param.dat"', "parameter_file_ncol 4",
         "sigmaconst T", "sigmainit 25.0", "b 0.01", "f0 0.6", "vref 1e-6",
         "evlaw aging", "restart F",
-        "pressurediffusion F",     # HBI leaves it uninitialised (../seas-bp5/peer/bp5_input.py)
+        "pressurediffusion F",     # HBI leaves it uninitialised (../../seas-bp5/peer/bp5_input.py)
     ] + (["bp7nucleation T"] if not a.no_nucleation else []) + ["outloc %d" % k for k in ids]
     open(os.path.join(a.out, "bp7.in"), "w").write("\n".join(lines) + "\n")
     print("HBI input in %s: %d x %d cells of %g m; %d VW cells (%.4f km^2, disc %.4f); %d station cells; "

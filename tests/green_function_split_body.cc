@@ -48,6 +48,7 @@ main(int argc, char **argv)
   scenes::parse_parameter_file(prm, source + "/../prm/seas-bp3-qd.prm");
   prm.parse_input_from_string("set Output directory = output-split-body\n"
                               "subsection Mesh\n"
+                              "  set Global refinements = 0\n"
                               "  set Local refinements = 2\n"
                               "end\n"
                               "subsection Output\n"

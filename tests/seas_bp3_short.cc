@@ -78,6 +78,7 @@ main(int argc, char **argv)
                               "set Overwrite output = true\n"
                               "set Stop after events = 2\n"
                               "subsection Mesh\n"
+                              "  set Global refinements = 0\n"
                               "  set Local refinements = 2\n"
                               "end\n"
                               "subsection Time stepping\n"

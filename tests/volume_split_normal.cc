@@ -60,6 +60,7 @@ namespace
                                 "/../prm/meshes/seas-bp3-60.msh\n"
                                 "end\n"
                                 "subsection Mesh\n"
+                                "  set Global refinements = 0\n"
                                 "  set Local refinements = 2\n"
                                 "end\n"
                                 "subsection Time stepping\n"

@@ -103,6 +103,7 @@ subsection Mesh file
   set File = $src/prm/meshes/seas-bp3-60.msh
 end
 subsection Mesh
+  set Global refinements = 0
   set Local refinements = 2
 end
 subsection Solver

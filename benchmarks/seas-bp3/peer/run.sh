@@ -14,6 +14,8 @@
 #   TMAX       end time in years of 365 d (default 1500)
 #   NICE       nice level (default 10)
 #   DIP        the fault's dip in degrees (default 60; BP3 also runs 30 and 90)
+#   SIGMACONST 1: HBI's sigmaconst (the slip does not change the normal stress; a diagnostic, not
+#              BP3; rsfcycle's counterpart is ../freeze-normal.patch)
 #   SENSE      thrust (default) or normal: BP3's normal-faulting variant, V_p = V_init = -1e-9 m/s and
 #              prestress -tau0; outputs stay thrust-positive (slip, shear stress negative)
 # Writes OUTDIR/{fltst_dpXXX.dat,global.dat,events.txt,srfst_x[+-]8.dat,timing.txt} and keeps HBI's native
@@ -45,6 +47,7 @@ BIN=$HBI_BIN
 N=$OUT/native
 rm -rf "$N"; mkdir -p "$N"
 $PY "$HERE/bp3_input.py" "$N" --cell "$CELL" --eps "$EPS" --dtmax "$DTMAX" --tmax "$TMAX" --sense "$SENSE" --dip "$DIP" --stiffen "$STIFFEN"
+if [ "${SIGMACONST:-0}" = 1 ]; then echo "sigmaconst T" >> "$N/bp3.in"; fi
 echo "== BP3-QD (dip $DIP, $SENSE): HBI $HBI_COMMIT + $(basename "$PATCH"), cell ${CELL} m, eps_r $EPS, dtmax $DTMAX s, tmax $TMAX yr -> $OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 ( cd "$N" && /usr/bin/time -v -o time.txt nice -n "$NICE" mpirun -np 1 "$BIN" bp3.in > log.txt 2>&1 ) || true
@@ -54,7 +57,7 @@ nice -n "$NICE" $PY "$HERE/hbi2seas_bp3.py" "$N" "$OUT" --commit "$HBI_COMMIT"
 nice -n "$NICE" $PY "$HERE/hbi_surface_bp3.py" "$N" "$OUT" --dip "$DIP"
 {
   echo "code=HBI $HBI_COMMIT + $(basename "$PATCH")"
-  echo "case=BP3-QD dip $DIP $SENSE, stiffen=$STIFFEN, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
+  echo "case=BP3-QD dip $DIP $SENSE, stiffen=$STIFFEN, sigmaconst=${SIGMACONST:-0}, cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
   echo "host=$(hostname) nproc=$(nproc --all) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: one core busy with another computation)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"

@@ -1,6 +1,6 @@
 // SEAS BP3-QD (prm/seas-bp3-qd.prm, the shipped set-up: 60-degree thrust
 // fault between two deformable sides, the slip-induced normal stress) on
-// coarse 200 m fault cells (2 local refinements instead of 5; 200 contact
+// coarse 200 m fault cells (0 + 2 refinements instead of 1 + 4; 200 contact
 // nodes, one rank, the Green's-function method) through its first two
 // events (the first, a partial rupture, stops below the surface).
 // Checks the 2D SEAS files of BP3 (output::SeasFiles; yes/no lines):

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Quick start for rsfcycle on Debian 12.
 #   bash quickstart.sh run    install missing packages, build (Release), run
 #                             the 2D laboratory wedge prm/wedge-2d.prm on
@@ -22,7 +23,7 @@ jobs=${JOBS:-2}
 # (benchmarks/seas-bp5/README.md).
 packages=(libdeal.ii-dev libsuitesparse-dev libhmat-oss-dev libopenblas0-serial
   openmpi-bin cmake g++ make numdiff python3-matplotlib python3-numpy
-  clang-format-14 git gmsh)
+  python3-pandas clang-format-14 git gmsh)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
@@ -50,8 +51,8 @@ fi
 # 3. Run or test.
 if [[ $mode == run ]]; then
   # --force: the demo run replaces the folder of an earlier demo run.
-  # RANKS (default 2) MPI ranks: the default run takes about 6 minutes on
-  # 2 cores, 9 on one (RANKS=1). Open MPI refuses root unless told.
+  # RANKS (default 2) MPI ranks (README.md gives the demo's wall time).
+  # Open MPI refuses root unless told.
   ranks=${RANKS:-2}
   if ((EUID == 0)); then
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1

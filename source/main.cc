@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // rsfcycle: earthquake cycles of a Kelvin-Voigt body on a rate-and-state
 // base (Pipping, Kornhuber, Rosenau, Oncken 2016). The thin driver: read the
 // parameter file, build the scene, run the generic solver.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The checks across entries and subsections of the parameters, after
 // parsing (Parameters::parse_parameters calls validate()): each failure is
 // one line naming the entries and what is allowed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The names of every Patterns::Selection and their parsing into enums
 // (Choice<Enum> of parameters.h).
 #include <rsfcycle/parameters.h>

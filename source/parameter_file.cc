@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <fstream>
 #include <rsfcycle/parameter_file.h>
 #include <sstream>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <rsfcycle/format.h>
 #include <rsfcycle/friction/laws.h>
 #include <rsfcycle/parameters.h>
@@ -162,8 +163,8 @@ namespace rsfcycle
                       "local-extrapolation",
                       Selection(Choice<Controller>::pattern()),
                       "How adaptive steps are chosen. step-doubling: the "
-                      "paper's controller (MODEL.md 4.3: two steps of tau "
-                      "against one of 2 tau, one of tau against two of "
+                      "paper's controller (doc/model.md §4.3: two steps of "
+                      "tau against one of 2 tau, one of tau against two of "
                       "tau/2, the step of tau accepted; 3 to 4 spatial "
                       "problems per step); local-extrapolation: one step of "
                       "tau against two of tau/2, the two half steps "
@@ -181,12 +182,13 @@ namespace rsfcycle
                       Selection("ladder|free"),
                       "With Controller = local-extrapolation: ladder keeps "
                       "every step size at Initial step x 2^k (halved on "
-                      "rejection, doubled when 8 x estimate <= Tolerance/2), "
-                      "so that step matrices, factorisations and multigrid "
-                      "level matrices are computed once per size and "
-                      "reused; free takes tau x min(2, max(0.2, 0.9 "
-                      "(Tolerance/estimate)^(1/3))) after every pair and "
-                      "rejection (new matrices for every step size; "
+                      "rejection, doubled when 8 x estimate <= Doubling "
+                      "threshold x Tolerance), so that step matrices, "
+                      "factorisations and multigrid level matrices are "
+                      "computed once per size and reused; free takes tau x "
+                      "min(2, max(0.2, 0.9 (Tolerance/estimate)^(1/3))) "
+                      "after every pair and rejection (new matrices for "
+                      "every step size; "
                       "benchmarks/time-stepping/README.md compares both)");
     prm.declare_entry("Doubling threshold",
                       "1",
@@ -287,8 +289,8 @@ namespace rsfcycle
       "volume",
       Selection(Choice<Bulk>::pattern()),
       "volume: the implicit step over the mesh (TNNMG); green-function: "
-      "the fault's Green's functions from the mesh (MODEL.md 8.1) and the "
-      "fault's ODE by Time stepping/Integrator = runge-kutta, or the "
+      "the fault's Green's functions from the mesh (doc/model.md §8.1) and "
+      "the fault's ODE by Time stepping/Integrator = runge-kutta, or the "
       "implicit step on the fault's nodes (Integrator = implicit): "
       "quasi-dynamic, elastic, prescribed normal stress, constant load");
     prm.declare_entry(

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -25,7 +26,7 @@ namespace rsfcycle
       "files. 2D: fltst_dpXXX, srfst_NAME, global.dat, slip.dat; 3D (a "
       "fault in a plane y = const of the mesh, x along strike, z up): "
       "fltst_strkXXdpYY, blkst_NAME, global.dat, rupture.dat and the "
-      "strike and depth profiles (README.md \"Output\", doc/seas.md)");
+      "strike and depth profiles (doc/output.md, doc/seas.md)");
     prm.declare_entry(
       "Fault stations",
       "0, 2.5e3, 5e3, 7.5e3, 10e3, 12.5e3, 15e3, 17.5e3, 20e3, 25e3, "

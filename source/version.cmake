@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Run at every build (the target rsfcycle_version in CMakeLists.txt): write
 # OUTPUT from INPUT with the git commit of SOURCE_DIR. OUTPUT is replaced
 # only when its text changes, so an unchanged commit recompiles nothing,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the absorbing boundary (boundary_id::absorbing, the mesh file's
 // role `absorbing`): the Lysmer-Kuhlemeyer dashpots that Discretisation
 // adds to C on such faces, so that a plane wave meeting the boundary

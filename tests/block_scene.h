@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The scene of the unit tests of the time step and the damping: a 1 m x
 // 0.25 m plane-strain block (4 x 1 coarse cells) on a base (contact) at
 // y = 0, held at the backstop x = 1, traction free elsewhere (or the top

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The two mirror models of SEAS BP1-QD (prm/seas-bp1-qd.prm) that
 // tests/green_function_split.cc and tests/volume_split.cc compare: the
 // one-sided body x >= 0 of prm/meshes/seas-bp1.msh with G/2 and rho/2

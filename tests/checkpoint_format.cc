@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the checkpoint format (output/checkpoint.h, doc/checkpoints.md)
 // through write_checkpoint and read_checkpoint on files in the folder
 // "run":

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The creep role (a part of the fault plane that slides at the load
 // velocity, its normal displacement as the contact's) and free slip on a
 // face parallel to the contact, in 3D, on tests/meshes/box-creep-3d.prm

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The closed form of an edge dislocation on a dipping fault through a
 // half-space's surface (Segall, Earthquake and Volcano Deformation, 2010,
 // ch. 3), for tests/green_operator_split_normal.cc and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks `Time stepping/Error norm`, the distance of two states in the
 // step-doubling error estimate (ProblemBase::error_distance), on the block
 // of block_scene.h (refined twice globally and twice toward the origin:

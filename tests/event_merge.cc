@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks `Output/Event merge time` (output::EventDetector): one contact
 // node, steps of 1 s, threshold 1e-3 m/s, v0 = 1e-9 m/s, times of the
 // accepted steps (no interpolation). The slip rate is 1 m/s at t = 10 ... 20

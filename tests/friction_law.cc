@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the regularised rate-and-state friction coefficient (2) and its
-// derivative, evaluated in log space (MODEL.md §2 "Numerical care"):
+// derivative, evaluated in log space (doc/model.md §2, "Working in log space"):
 //  - Table 1 values (a = 0.002, b = 0.017, mu* = 0.7): mu equals the plain
 //    formula a asinh(V / (2 V_theta)) wherever that is representable
 //    (relative difference printed, must be < 1e-12);

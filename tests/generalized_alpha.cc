@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the generalized-alpha step (`Solver/Time scheme =
-// generalized-alpha`, time/generalized_alpha_scheme.h, MODEL.md §8.3):
+// generalized-alpha`, time/generalized_alpha_scheme.h, doc/model.md §8.3):
 //  1. The scheme's coefficients on the oscillator u'' + Omega^2 u = 0 (one
 //     step of tau = 1 through the same formulas as ImplicitStep: the step
 //     matrix, the known parts, the new velocity, acceleration and

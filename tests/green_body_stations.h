@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Shared by the tests of GreenFault::body() (green_function_body,
 // green_function_split_body): the body's displacement and velocity at the
 // observation points against the operator's, which computes them

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The Green's-function method in 3D (two tangential dofs per contact node,
 // the slip rate along the traction: free rake) against the volume path on
 // the same mesh: tests/meshes/box-fault-3d.prm and .msh (a 24 x 12 x 12 km box

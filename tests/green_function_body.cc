@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The whole body of the Green's-function method (GreenFault::body(), what
 // its VTU snapshots show): on SEAS BP1-QD's mesh at 200 m (antiplane,
 // prm/seas-bp1-qd.prm), a fault state with a smooth slip and slip rate

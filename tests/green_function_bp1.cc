@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP1-QD (prm/seas-bp1-qd.prm) on 200 m cells (3 local refinements),
 // to the end of the first event, with both methods of Solver/Bulk on the
 // same mesh: volume (the implicit trapezoidal step over the mesh, TNNMG

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A fault between two deformable sides (split nodes, Boundary roles
 // fault-opposite and load-opposite, physics/split_fault.h) against the
 // one-sided mirror model of the same antisymmetric problem, in the
@@ -17,7 +18,7 @@
 // solution with the displacement halved: the same discrete problem for the
 // slip, so the two must agree to rounding. Checked, antiplane and then
 // plane strain (dip slip on the vertical fault; the one-sided contact's
-// normal displacement free and its extension creeping, MODEL.md §8.2, the
+// normal displacement free and its extension creeping, doc/model.md §8.2, the
 // two-sided normal displacement continuous, §8.4):
 //  - after the first step (3619 s, the same step in both): the surface
 //    displacement at 2 and 8 km from the fault, 2 x two-sided against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The whole body of a split fault in the Green's-function method
 // (GreenFault::body(), what its VTU snapshots show): SEAS BP3-QD's 60°
 // thrust fault between two deformable sides (prm/seas-bp3-qd.prm) on 200 m

@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the Green's-function operator of `Solver/Bulk = green-function`
-// (physics::GreenOperator, MODEL.md §8.1) against the antiplane closed form:
-// uniform slip D on the depth interval d1 < z < d2 of the vertical fault of
-// a half-space with a free surface (a pair of screw dislocations and their
-// images). In the full space with shear modulus mu the shear stress on the
-// fault is
+// (physics::GreenOperator, doc/model.md §8.1) against the antiplane closed
+// form: uniform slip D on the depth interval d1 < z < d2 of the vertical
+// fault of a half-space with a free surface (a pair of screw dislocations
+// and their images). In the full space with shear modulus mu the shear
+// stress on the fault is
 //   tau(z) = mu D / (2 pi) [1/(z - d2) - 1/(z - d1) + 1/(z + d1) - 1/(z + d2)]
 // and the surface displacement on the side x > 0 is
 //   u(x) = D / pi [atan(d2 / x) - atan(d1 / x)];

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks that the Green's-function operator of `Solver/Bulk =
-// green-function` (physics::GreenOperator, MODEL.md §8.1) converges under
+// green-function` (physics::GreenOperator, doc/model.md §8.1) converges under
 // mesh refinement in plane strain, where no closed form is at hand: the
 // mesh of prm/seas-bp1-qd.prm with `Displacement = vector` (the vertical
 // fault as a dip-slip contact, its normal held, the same material), at 3,

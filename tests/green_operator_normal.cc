@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks `Mesh file/Contact normal` (held | free) through the Green's-
 // function operator in plane strain against the closed forms of a
 // half-plane y > 0 whose boundary y = 0 carries the tangential

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the normal coupling of a split fault in the Green's-function
 // method (physics::GreenOperator::N, physics/split_fault.h): the normal
 // stress change that slip on a dipping fault makes through the free

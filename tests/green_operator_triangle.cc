@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // physics::GreenOperator::compress() and apply() on N ranks: the symmetric
 // operator S stored as its lower triangle, split among the ranks by product
 // rows that are not the ranks' own rows, the transposed blocks' sums

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the local-extrapolation controller (time/local_extrapolation.h) on
 // the scalar ODE y' = -k(t) y, stepped by the trapezoidal rule
 // y -> y (1 - k tau/2)/(1 + k tau/2) (second order, like the Newmark step),

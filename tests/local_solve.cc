@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the exact node-local friction solve of the nonlinear Gauss-Seidel
-// sweep, min 1/2 x^T A x - rho^T x + phi(|x|) (MODEL.md §4.2 step 1):
+// sweep, min 1/2 x^T A x - rho^T x + phi(|x|) (doc/model.md §4.2 step 1):
 //  - stick below cohesion: |rho| <= W gives x = 0 exactly;
 //  - slip above: the optimality condition A x + phi'(|x|) x/|x| = rho holds
 //    to a relative residual < 1e-10, for 1 (2D) and 2 (3D) components;

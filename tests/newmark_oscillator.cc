@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the implicit time step (15) and its theta scheme (`Solver/Theta`,
 // time/theta_scheme.h) on a frictionless elastic block: a 1 m x 0.25 m
 // plane-strain block on a base with zero friction (mu* = 0, cohesion 0, no

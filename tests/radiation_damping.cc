@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the radiation damping of `Solver/Dynamics = quasi-dynamic`: the
 // dashpot eta V that Discretisation adds to C on the contact.
 //  - On the block of block_scene.h (inviscid, so C is the dashpot alone),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the refinement laws of `Mesh/Refinement law`:
 //  - Wedge::distance_to_patch of a box against a brute-force minimum over a
 //    fine sampling of box and patch (the patch written out here from the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A continuum model run from a test's ParameterHandler with the method its
 // Solver/Bulk names (the volume path's ProblemBase or the Green's-function
 // method's GreenFault), as main.cc would run it.

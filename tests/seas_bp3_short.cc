@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP3-QD (prm/seas-bp3-qd.prm, the shipped set-up: 60-degree thrust
 // fault between two deformable sides, the slip-induced normal stress) on
 // coarse 200 m fault cells (0 + 2 refinements instead of 1 + 4; 200 contact
@@ -29,7 +30,7 @@
 // not the benchmark's, benchmarks/seas-bp3/README.md); the starts are
 // checked against this run's 175.48 and 273.50 years to half a year (they
 // move by days with the rounding of the machine's arithmetic: the second
-// printed as 274 on one machine and 273 on another, 2026-11-28).
+// has printed as 274 on one machine and 273 on another).
 #include "run_model.h"
 #include "tests.h"
 

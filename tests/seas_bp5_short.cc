@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP5-QD (prm/seas-bp5-qd.prm, the shipped set-up) on its coarse 4 km
 // cells (no local refinement; 240 contact nodes, one rank, the
 // Green's-function method) through its first event, which the nucleation

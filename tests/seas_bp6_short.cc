@@ -1,13 +1,14 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP6-QD (prm/seas-bp6-qd-a.prm, prm/seas-bp6-qd-s.prm) on 200 m cells
 // (3 local refinements) over the benchmark's two years, with the
 // Green's-function method: fluid injected into a velocity-strengthening
 // fault, the friction acting on sigma_n - p(x, t). Checked (yes/no lines):
 //  - the pore_pressure and darcy_vel columns of the station files equal
 //    the benchmark's closed form (written again here, with std::erfc, from
-//    SEAS-BP3-BP8.md: p = q0 / (beta phi sqrt(alpha)) [G(x, t) - G(x, t -
-//    t_off)], q = sign(x) q0 / 2 [erfc(|x| / sqrt(4 alpha t)) - ...]) at
-//    every row of the stations at contact nodes (x3 = 0, 1, 5 km; the
-//    others interpolate between nodes), to 1 Pa and 1e-12 m/s;
+//    the SEAS BP6 description: p = q0 / (beta phi sqrt(alpha)) [G(x, t) -
+//    G(x, t - t_off)], q = sign(x) q0 / 2 [erfc(|x| / sqrt(4 alpha t)) -
+//    ...]) at every row of the stations at contact nodes (x3 = 0, 1,
+//    5 km; the others interpolate between nodes), to 1 Pa and 1e-12 m/s;
 //  - the fault starts in steady sliding at V_init = 1e-12 m/s (the
 //    Initial state of the .prm: log10 V = -12 in the first row) and
 //    nothing moves before the pressure arrives (slip at x3 = 7.5 km below

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The shear stress perturbation Delta tau(x) g(t) of the Green's-function
 // method (SEAS BP7's prescribed nucleation), in 3D with two-component slip,
 // on the problem of tests/meshes/box-creep-3d.prm (a velocity-weakening

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // solvers::SparseCholesky::factorize_shared(): the factor made once per
 // node (by the node's first rank) and read by every rank of the node from
 // an MPI shared-memory window, as the Green's-function operator uses it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Our scheme against an independent reference: the quasi-dynamic
 // stick-slip spring-slider of prm/spring-slider.prm (k = k_crit / 2, ageing
 // law) over 1000 s (4 events), once with the wedge's scheme (Newmark,

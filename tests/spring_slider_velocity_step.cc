@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The velocity step through the whole spring-slider code path (Newmark step,
 // exact 1-DOF friction solve, rate/state fixed point, step doubling): a
 // very stiff spring (k = 1e12 Pa/m = 1000 a |sigma_n| / L, no damping,
@@ -73,7 +74,7 @@ main()
       std::ostringstream   log;
       slider.run(prm, log);
 
-      // the columns of time-series.csv by name (README "Output")
+      // the columns of time-series.csv by name (doc/output.md)
       std::ifstream                    in("output-" + law + "/time-series.csv");
       std::string                      line;
       std::vector<std::vector<double>> rows;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Checks the closed-form state update (17) in the variable
 // alpha = log(theta V*/L) against the analytic solution of the ageing law
 // for constant V, theta(t) = L/V + (theta0 - L/V) exp(-V t / L), after

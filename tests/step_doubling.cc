@@ -1,4 +1,5 @@
-// Checks the generic step-doubling controller (MODEL.md §4.3) on the scalar
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Checks the generic step-doubling controller (doc/model.md §4.3) on the scalar
 // ODE y' = -k(t) y, stepped by implicit Euler y -> y/(1 + k tau), and the
 // distance |log y1 - log y2|, which behaves like the state distance (14):
 //  - the distance between two steps of tau and one of 2 tau is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Minimal test support for rsfcycle's ctest suite (deal.II's test
 // mechanism from an external project): every unit test writes through
 // deallog into the file "output", which deal_ii_pickup_tests() compares

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Closed-form checks of the rate-and-state law under an imposed slip rate
 //, through the friction API that every scene steps with
 // (update_state (17) in steps of 0.05 L/V, friction_coefficient (2)).

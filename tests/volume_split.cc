@@ -1,10 +1,12 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A fault between two deformable sides in the volume method
 // (Discretisation::tie_fault_sides, physics/split_fault.h) against the
 // one-sided mirror model of the same antisymmetric problem: SEAS BP1-QD
 // (prm/seas-bp1-qd.prm with Solver/Bulk = volume, the direct linear
 // correction, implicit steps at tolerance 1e-6, TNNMG 1e-11) on 400 m fault
-// cells, gravity off, over the first 5e9 s (interseismic creep into the
-// locked patch; the largest slip rate 2.5e-9 m/s at the end).
+// cells, gravity off, over the first 1e9 s (interseismic creep into the
+// locked patch; about 1,700 steps; the largest slip rate 9.5e-10 m/s at the
+// end).
 //  (the two models of tests/bp1_mirror_models.h)
 //  - one-sided: the body x >= 0 of prm/meshes/seas-bp1.msh with G/2 and
 //    rho/2 against a rigid mirror (the benchmark's reduction);
@@ -30,8 +32,10 @@
 //    1e-6 relative and the surface displacement at 2 km within 1e-6.
 // On 2 ranks (volume_split.mpirun=2.output; the two sides' nodes of a pair
 // on different ranks): algebraic multigrid instead of the direct correction
-// (one rank only), to 5e7 s, the same checks but the steps' count (the
-// iterative solves' rounding moves the step sizes).
+// (one rank only), to 5e7 s, antiplane only (the plane-strain tie across
+// ranks, with its normal displacement, is volume_split_normal.mpirun=2's),
+// the same checks but the steps' count (the iterative solves' rounding
+// moves the step sizes).
 // Printed: the first step's displacement in um to 1e-6, the end's in mm
 // to 0.01, log10 V [m/s] to 0.001.
 #include "bp1_mirror_models.h"
@@ -63,7 +67,7 @@ namespace
                                 "\n"
                                 "set Overwrite output = true\n"
                                 "set End time = " +
-                                std::string(on_ranks() ? "5e7" : "5e9") +
+                                std::string(on_ranks() ? "5e7" : "1e9") +
                                 "\n"
                                 "subsection Mesh\n"
                                 "  set Local refinements = 2\n"
@@ -147,6 +151,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   initlog(6);
   compare("antiplane");
-  compare("vector");
+  if (!on_ranks())
+    compare("vector");
   return 0;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The slip-induced normal stress of a split fault in the volume method
 // (Discretisation::fault_normal_rows, ImplicitStep::couple_normal_forces)
 // against the Green's-function method on the same mesh: SEAS BP3-QD at 60

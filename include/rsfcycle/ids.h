@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_ids_h
 #define rsfcycle_ids_h
 
@@ -6,7 +7,7 @@
 namespace rsfcycle
 {
   /**
-   * Boundary ids used by every scene (MODEL.md §1). Scenes set them on the
+   * Boundary ids used by every scene (doc/model.md §1). Scenes set them on the
    * coarse mesh; the solver reads nothing else about the geometry.
    *  - surface: traction free;
    *  - backstop: prescribed velocity v(t) (all components);
@@ -22,7 +23,7 @@ namespace rsfcycle
    *    backstop's velocity: the tangential components prescribed as on the
    *    backstop, the normal one held or free as on the contact;
    *  - fault_opposite: the other side of a fault between two deformable
-   *    parts of the body (split nodes, MODEL.md §8.4): faces of the
+   *    parts of the body (split nodes, doc/model.md §8.4): faces of the
    *    contact's plane whose nodes pair with the contact and creep nodes
    *    at the same positions. The assembly treats them as traction free;
    *    the Green's-function method ties each pair (the normal displacement
@@ -42,7 +43,7 @@ namespace rsfcycle
     constexpr dealii::types::boundary_id backstop_opposite = 8;
   } // namespace boundary_id
 
-  /** Material ids: the regions of MODEL.md §5 (density, viscosity). */
+  /** Material ids: the regions of doc/model.md §5 (density, viscosity). */
   namespace material_id
   {
     constexpr dealii::types::material_id upper = 0;

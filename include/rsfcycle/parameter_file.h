@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_parameter_file_h
 #define rsfcycle_parameter_file_h
 

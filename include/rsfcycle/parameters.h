@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_parameters_h
 #define rsfcycle_parameters_h
 
@@ -92,7 +93,7 @@ namespace rsfcycle
   /** Subsection "Time stepping": integrator and step-size control. */
   struct TimeSteppingParameters
   {
-    /** The step-size control of the implicit step (MODEL.md §4.3). */
+    /** The step-size control of the implicit step (doc/model.md §4.3). */
     enum class Controller
     {
       step_doubling,
@@ -131,7 +132,7 @@ namespace rsfcycle
   /** Subsection "Solver": rate/state coupling, TNNMG, linear correction. */
   struct SolverParameters
   {
-    /** Rate/state coupling within one time step (MODEL.md §4.1). */
+    /** Rate/state coupling within one time step (doc/model.md §4.1). */
     enum class Coupling
     {
       fixed_point,
@@ -144,7 +145,7 @@ namespace rsfcycle
       quasi_static,
       quasi_dynamic
     };
-    /** The linear correction of TNNMG (MODEL.md §4.2 step 3). */
+    /** The linear correction of TNNMG (doc/model.md §4.2 step 3). */
     enum class LinearCorrection
     {
       multigrid,
@@ -153,7 +154,7 @@ namespace rsfcycle
     };
     /**
      * How the bulk enters a run: the volume mesh at every step, or its
-     * Green's functions on the fault (MODEL.md §8.1).
+     * Green's functions on the fault (doc/model.md §8.1).
      */
     enum class Bulk
     {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_problem_base_h
 #define rsfcycle_problem_base_h
 
@@ -24,8 +25,8 @@ namespace rsfcycle
   using namespace dealii;
 
   /**
-   * The generic solver of MODEL.md §1-4 for one scene, as the design card
-   * names it. It owns, each a member of its own class:
+   * The generic solver of doc/model.md §1-4 for one scene. It owns, each a
+   * member of its own class:
    *  - the discretisation (physics/discretisation.h): the Triangulation
    *    refined toward the seismogenic patch, FE_Q(1)^dim, the matrices
    *    M, C, K and the gravity load, the Dirichlet dofs;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <functional>
 #include <rsfcycle/friction/ageing_law.h>
 #include <rsfcycle/friction/laws.h>

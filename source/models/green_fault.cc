@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The quasi-dynamic fault with the bulk's Green's functions
-// (models/green_fault.h, MODEL.md §8.1).
+// (models/green_fault.h, doc/model.md §8.1).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -410,10 +411,9 @@ namespace rsfcycle
       const double g = perturbation_factor(t);
       for (unsigned int k = 0; k < damping.size(); ++k)
         {
-          // the node's force F = g0 + t g1 - S s + g(t) P on its dofs (P
-          // the perturbation's forces); with two, the
-          // slip rate has the direction of F (free rake) and the balance
-          // holds for its length
+          // the node's force F = g0 + t g1 - S s + g(t) P on its dofs (P the
+          // perturbation's forces); with two, the slip rate has the
+          // direction of F (free rake) and the balance holds for its length
           const unsigned int i0 = dof_start[k], n_dofs = dof_start[k + 1] - i0;
           const unsigned int node = first_node + k;
           std::array<double, 2> F = {{0., 0.}};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The outputs of the quasi-dynamic fault with the bulk's Green's functions
 // (models/green_fault.h): its layout and samples for the writers, the VTU
 // snapshots of the whole body, the description in log.txt.

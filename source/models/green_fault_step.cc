@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The implicit step of the Green's-function method: the spatial problem on
 // the fault's nodes only (models/green_fault.h, solvers/fault_solver.h).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <cerrno>
 #include <rsfcycle/output/csv_file.h>
 

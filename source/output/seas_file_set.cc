@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // What the SEAS writers of 2D and 3D models share (output/seas_file_set.h).
 #include <cerrno>
 #include <rsfcycle/output/events.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The SEAS files of 3D models (output/seas_plane_files.h).
 #include <algorithm>
 #include <boost/serialization/vector.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <algorithm>
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <rsfcycle/output/base_profile.h>
 #include <rsfcycle/output/event_catalogue.h>
 #include <rsfcycle/output/seas_files.h>

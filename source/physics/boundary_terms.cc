@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The lumped boundary terms of Discretisation's matrices: the contact's
 // radiation damping and shear prestress, the absorbing faces' dashpots.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The assembled system gathered onto every rank (physics/global_system.h).
 #include <array>
 #include <deal.II/base/mpi.h>

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The fault's Green's functions from the assembled stiffness
-// (physics/green_operator.h, MODEL.md §8.1).
+// (physics/green_operator.h, doc/model.md §8.1).
 #include <algorithm>
 #include <boost/crc.hpp>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The operator file green-operator.bin (physics/green_operator.h): written
 // and read collectively, every rank its own rows of S.
 #include <boost/crc.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The bulk's equilibrium of a gathered system with its contact and fixed
 // dofs given (physics/interior_solver.h).
 #include <deal.II/lac/dynamic_sparsity_pattern.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The two sides of a split fault tied in the gathered system
 // (physics/split_fault.h).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The two sides of a split fault tied in the volume method's matrices
 // (Discretisation::tie_fault_sides, physics/split_fault.h).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/lac/solver_cg.h>
 #include <rsfcycle/physics/static_solver.h>
 #include <rsfcycle/solvers/amg_correction.h>

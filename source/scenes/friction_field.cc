@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>

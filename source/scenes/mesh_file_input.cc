@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <deal.II/base/utilities.h>
 #include <limits>
 #include <rsfcycle/format.h>
@@ -212,10 +213,10 @@ namespace rsfcycle
           "and creep faces at the same positions, e.g. from gmsh's "
           "Plugin(Crack); the slip is the jump of the tangential "
           "displacement across the fault, the normal displacement is "
-          "continuous; Solver/Bulk = green-function only), free (traction "
-          "free), free-slip (zero "
-          "normal velocity; in 2D parallel to the contact, in 3D "
-          "perpendicular to it with one normal for all), absorbing (the "
+          "continuous; with Gravity = 0, and in the volume method with "
+          "Solver/Linear correction = direct or amg), free (traction free), "
+          "free-slip (zero normal velocity; in 2D parallel to the contact, "
+          "in 3D perpendicular to it with one normal for all), absorbing (the "
           "truncation of an unbounded body: the dashpot traction -rho (c_p "
           "v_n n + c_s v_t), antiplane -rho c_s v, of the adjacent cell's "
           "material lets waves that reach it normally leave; it also resists "

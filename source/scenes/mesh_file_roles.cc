@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The boundary roles of a mesh-file scene (scenes/mesh_file.h,
 // MeshFile::assign_roles): the tags checked against the roles, the
 // contact's plane, the rotated frame and rsfcycle's boundary ids.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/output/writers.h>

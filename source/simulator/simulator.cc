@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <csignal>
 #include <iomanip>
 #include <rsfcycle/simulator/simulator.templates.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The exact linear correction of TNNMG (solvers/direct_correction.h):
 // CHOLMOD on the free non-contact unknowns and a dense Schur complement on
 // the contact dofs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The fault-only spatial problem of the Green's-function method's implicit
 // step (solvers/fault_solver.h).
 #include <algorithm>

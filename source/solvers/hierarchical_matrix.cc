@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A matrix of point interactions compressed by hmat-oss
 // (solvers/hierarchical_matrix.h).
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <cmath>
 #include <cstdlib>
 #include <deal.II/base/array_view.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <cmath>
 #include <rsfcycle/format.h>
 #include <rsfcycle/time/implicit_step.h>

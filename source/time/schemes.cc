@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #include <functional>
 #include <rsfcycle/time/generalized_alpha_scheme.h>
 #include <rsfcycle/time/schemes.h>

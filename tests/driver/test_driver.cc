@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // Test driver for whole-run tests (NAME.prm.in): runs rsfcycle on the given
 // parameter file exactly as the executable does, then writes the file
 // "output" with a digest of the run that contains no timings and no paths:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A quadrilateral mesh whose contact (tag 1) bends at x = 0.5 (a kinked
 // fault), for the test scripts/bad_input: Scene = mesh-file must refuse a
 // contact that is not planar. Regenerate:

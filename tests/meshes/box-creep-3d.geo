@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A hexahedral box against a vertical fault plane whose lower part creeps,
 // for the test creep_boundary_3d (SEAS BP5's set-up in small): the fault
 // plane y = 0 split into the frictional contact z in [-8, 0] km (tag 1) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A hexahedral box against a vertical fault, for the 3D tests of the
 // Green's-function method (green_function_3d): the fault plane y = 0
 // (tag 1, contact), x along strike in [-12, 12] km, z up in [-12, 0] km;

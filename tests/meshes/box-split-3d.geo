@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // tests/meshes/box-fault-3d.geo with both sides of its fault: the body
 // y in [0, 12] km and its mirror image y in [-12, 0] km as two boxes of
 // OpenCASCADE that are not fused, so that the fault plane y = 0 is meshed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A fault dipping 60 degrees through a half-plane (SEAS BP3's geometry,
 // coarse), both sides meshed apart with unstructured quadrilaterals, so
 // that their cells differ and only the fault's nodes coincide (split

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP1's half-space (prm/meshes/seas-bp1.geo) with both sides of the
 // fault: the body x >= 0 of seas-bp1.geo and its mirror image x <= 0, the
 // fault x = 0 meshed twice (points 1-3 and 101-103 coincide but are not

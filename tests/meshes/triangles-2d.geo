@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A triangle mesh of the unit square (tags as the wedge's: 1 contact,
 // 2 load, 3 free, volume 10), for the test scripts/bad_input: Scene =
 // mesh-file must refuse cells that are not quadrilaterals.

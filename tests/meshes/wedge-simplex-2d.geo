@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The coarse mesh of the built-in 2D wedge (GridGenerator::simplex of the
 // triangle A, B, C: three quadrilaterals through the edge midpoints and the
 // centroid) in the paper's coordinates (trench A at the origin, x toward

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The coarse mesh of the built-in 3D wedge (the 2D simplex of
 // wedge-simplex-2d.geo extruded by 0.6 m in z, one layer of hexahedra) in
 // the paper's coordinates, one volume tag, for the test

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A fault through a whole plane, one side modelled: the body x >= 0 against
 // the fault x = 0, which spans y in [-L, L] whole (tag 1, contact); the
 // other sides (tag 2) truncate the plane at L = 400 km. Coarse cells of

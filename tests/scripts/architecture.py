@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Checks that doc/architecture.md is true of the code (run by ctest as
 scripts/architecture):
 

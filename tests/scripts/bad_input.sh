@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Bad-input test: each malformed parameter file must give exactly
 # one line on stderr, "rsfcycle: error: ...", naming the offending entry (the
 # expected word is checked), a non-zero exit status, and must not create or

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Solver/Bulk = green-function on 2 MPI ranks (each rank the rows of S of
 # its contact nodes, the fault's state on every rank). SEAS BP1-QD at 200 m
 # cells through its first event (about 193 years), checked:

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # The Green's-function operator file (Solver/Bulk = green-function): every
 # run writes green-operator.bin to its run folder; `Solver/Green operator
 # file` reuses it in a new run (a relative path beside the .prm), which

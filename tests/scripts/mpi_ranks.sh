@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Runs under mpirun: the spring-slider, which has one unknown,
 # started on 2 ranks must stop with one line (not one per rank) naming
 # `Scene` and the rank count, exit non-zero and write nothing; on 1 rank

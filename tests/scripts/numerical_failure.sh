@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Numerical-failure test: provokes each failure of a spatial
 # problem and checks that the step is rejected and halved down to the
 # minimum step, and that the run then stops with exit status 1, a diagnosis

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # What a new user meets first (doc/running.md): (1) `rsfcycle --version`
 # prints "rsfcycle X.Y.Z, commit C, deal.II A.B.C, Release|Debug", and
 # --help names the mesh-file scene and every shipped .prm; (2) a parameter

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Run-folder integrity test. On a short coarse wedge run:
 #  - a checkpoint cut to 1000 bytes, one with 64 bytes overwritten in the
 #    middle, one from another mesh (one refinement less) and one whose

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_friction_ageing_law_h
 #define rsfcycle_friction_ageing_law_h
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_friction_law_h
 #define rsfcycle_friction_law_h
 
@@ -11,8 +12,8 @@ namespace rsfcycle
   {
     /**
      * Rate-and-state parameters of one contact node. The state is carried as
-     * alpha = log(theta V* / L) throughout (MODEL.md §2), so theta itself is
-     * never formed in a code path that could overflow.
+     * alpha = log(theta V* / L) throughout (doc/model.md §2), so theta itself
+     * is never formed in a code path that could overflow.
      */
     struct Parameters
     {
@@ -21,7 +22,7 @@ namespace rsfcycle
       double mu_star  = 0.7;     // reference friction coefficient [-]
       double v_star   = 50e-6;   // reference slip rate [m/s]
       double L        = 22.5e-6; // characteristic slip distance [m]
-      double cohesion = 0;       // C [Pa]: stick below w C (MODEL.md (13))
+      double cohesion = 0;       // C [Pa]: stick below w C (doc/model.md (13))
 
       /** log V_theta = log V* - (mu* + b alpha) / a, eq. (2). */
       double
@@ -46,7 +47,7 @@ namespace rsfcycle
     };
 
     /**
-     * A rate-and-state friction law (MODEL.md §2): the friction coefficient
+     * A rate-and-state friction law (doc/model.md §2): the friction coefficient
      * mu(V, alpha) with its derivatives, and the evolution of the state
      * alpha = log(theta V* / L). Every part of the program that evaluates
      * friction takes the law from here (`Solver/State law`, friction/laws.h):
@@ -118,7 +119,7 @@ namespace rsfcycle
                    double            V,
                    double            tau) const = 0;
 
-      /** mu(V, alpha) (MODEL.md (2)). */
+      /** mu(V, alpha) (doc/model.md (2)). */
       double
       friction_coefficient(const Parameters &p,
                            const double      alpha,

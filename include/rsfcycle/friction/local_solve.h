@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_friction_local_solve_h
 #define rsfcycle_friction_local_solve_h
 
@@ -13,7 +14,7 @@ namespace rsfcycle
     /**
      * The friction potential of one contact node with lumped quadrature,
      * phi(s) = N int_0^s mu(r) dr + W s, where N = w_i |sigma_n,i| is the
-     * node's normal force and W = w_i C its cohesion force (MODEL.md (13)).
+     * node's normal force and W = w_i C its cohesion force (doc/model.md (13)).
      * Only its derivatives are needed by the solver. The state alpha is set
      * with set_state(), which also computes the law's state term (log
      * V_theta(alpha)) once for the many evaluations of a fixed-point
@@ -81,7 +82,7 @@ namespace rsfcycle
 
     /**
      * Exact minimiser of the node-local problem of the nonlinear Gauss-Seidel
-     * sweep (MODEL.md §4.2 step 1),
+     * sweep (doc/model.md §4.2 step 1),
      *   min_x  1/2 x^T A x - rho^T x + phi(|x|),   x in R^d, d = dim - 1,
      * with A symmetric positive definite (d x d, row-major).
      * x = 0 if |rho| <= phi'(0+) = W (stick below cohesion). Otherwise the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_friction_slip_law_h
 #define rsfcycle_friction_slip_law_h
 
@@ -9,7 +10,7 @@ namespace rsfcycle
   namespace friction
   {
     /**
-     * The slip law, theta' = -(theta V / L) log(theta V / L) (MODEL.md §2),
+     * The slip law, theta' = -(theta V / L) log(theta V / L) (doc/model.md §2),
      * in alpha = log(theta V* / L): log(theta V / L) = alpha + log(V / V*)
      * decays like e^{-V t / L} at constant V.
      */

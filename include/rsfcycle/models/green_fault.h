@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_models_green_fault_h
 #define rsfcycle_models_green_fault_h
 
@@ -62,7 +63,7 @@ namespace rsfcycle
     };
 
     /**
-     * `Solver/Bulk = green-function` (MODEL.md §8.1): the quasi-dynamic
+     * `Solver/Bulk = green-function` (doc/model.md §8.1): the quasi-dynamic
      * continuum with a linear elastic bulk reduced to its fault. The mesh,
      * the matrices and the contact quadrature are the volume path's
      * (physics::Discretisation, physics::ContactQuadrature); the bulk's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_models_spring_slider_h
 #define rsfcycle_models_spring_slider_h
 

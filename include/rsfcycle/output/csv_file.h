@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_output_csv_file_h
 #define rsfcycle_output_csv_file_h
 

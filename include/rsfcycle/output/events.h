@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_output_events_h
 #define rsfcycle_output_events_h
 
@@ -12,7 +13,7 @@ namespace rsfcycle
   namespace output
   {
     /**
-     * One slip event (MODEL.md §7, doc/events.md): a maximal time interval
+     * One slip event (doc/model.md §7, doc/events.md): a maximal time interval
      * in which the maximum slip rate on the contact exceeds the threshold.
      */
     struct Event

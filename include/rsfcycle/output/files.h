@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_output_files_h
 #define rsfcycle_output_files_h
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_body_state_h
 #define rsfcycle_physics_body_state_h
 

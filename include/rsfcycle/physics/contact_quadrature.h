@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_contact_quadrature_h
 #define rsfcycle_physics_contact_quadrature_h
 
@@ -21,7 +22,7 @@ namespace rsfcycle
     using namespace dealii;
 
     /**
-     * The boundary quadrature of the friction term (MODEL.md §2, the
+     * The boundary quadrature of the friction term (doc/model.md §2, the
      * sinh^-1 dissipation): the contact nodes (the base vertices with a
      * free tangential component), their lumped (trapezoidal, vertex)
      * weights w_i condensed onto the non-hanging nodes so that the friction

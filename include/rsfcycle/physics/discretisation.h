@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_discretisation_h
 #define rsfcycle_physics_discretisation_h
 
@@ -56,7 +57,7 @@ namespace rsfcycle
     };
 
     /**
-     * The discretisation of the Kelvin-Voigt body (MODEL.md §1-2): the
+     * The discretisation of the Kelvin-Voigt body (doc/model.md §1-2): the
      * scene's coarse mesh refined toward the seismogenic patch,
      * FE_Q(1)^dim (antiplane: FE_Q(1), the out-of-plane component) with
      * its multigrid level dofs and hanging-node

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_global_system_h
 #define rsfcycle_physics_global_system_h
 

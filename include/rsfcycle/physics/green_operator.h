@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_green_operator_h
 #define rsfcycle_physics_green_operator_h
 
@@ -18,7 +19,7 @@ namespace rsfcycle
   {
     /**
      * The fault's Green's functions of a quasi-static elastic bulk
-     * (MODEL.md §8.1). The dofs split into the contact's tangential dofs c
+     * (doc/model.md §8.1). The dofs split into the contact's tangential dofs c
      * (one per contact node in 2D, two in 3D: the slip s), the fixed dofs b
      * (the loads' prescribed displacement u_b(t) = t v_b from t = 0, the held
      * normal components, hanging nodes) and the others I. With the bulk in

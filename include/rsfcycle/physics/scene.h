@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_scene_h
 #define rsfcycle_physics_scene_h
 
@@ -42,7 +43,7 @@ namespace rsfcycle
     /**
      * A scene: everything that describes one physical set-up, handed to the
      * generic solver (ExaDG's split of scenario and solver). The geometry is
-     * given in the rotated frame of MODEL.md §1: the base (boundary id
+     * given in the rotated frame of doc/model.md §1: the base (boundary id
      * `contact`) lies in y = 0 and the body above it. Adding a scene never
      * touches the solver: it is a class in scenes/ and a line in
      * scenes/registry.cc.
@@ -115,7 +116,7 @@ namespace rsfcycle
 
       /**
        * The initial state at a point of the base, as alpha =
-       * log(theta V* / L) (MODEL.md §2); 0 is theta = L / V*.
+       * log(theta V* / L) (doc/model.md §2); 0 is theta = L / V*.
        */
       virtual double
       initial_state(const Point<dim> &) const

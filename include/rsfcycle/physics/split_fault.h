@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_physics_split_fault_h
 #define rsfcycle_physics_split_fault_h
 
@@ -9,7 +10,7 @@ namespace rsfcycle
   namespace physics
   {
     /**
-     * Tie the two sides of a split fault (MODEL.md §8.4) in a gathered
+     * Tie the two sides of a split fault (doc/model.md §8.4) in a gathered
      * system: every node of the contact and creep faces (the + side) pairs
      * with the node of a fault-opposite face (the - side) at the same
      * position, and the system is rewritten in new unknowns, u = T u~,

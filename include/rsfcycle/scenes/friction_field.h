@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_scenes_friction_field_h
 #define rsfcycle_scenes_friction_field_h
 

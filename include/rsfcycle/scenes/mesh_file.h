@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_scenes_mesh_file_h
 #define rsfcycle_scenes_mesh_file_h
 
@@ -28,7 +29,7 @@ namespace rsfcycle
      * vectors.
      *
      * The contact must be planar. The scene rotates the mesh into the
-     * solver's frame (MODEL.md §1: contact in y = 0, body above it, x down
+     * solver's frame (doc/model.md §1: contact in y = 0, body above it, x down
      * dip where gravity defines a dip) and every vector with it; the
      * functions and observation points of the .prm stay in the mesh's
      * coordinates. Free-slip boundaries fix one Cartesian component of the

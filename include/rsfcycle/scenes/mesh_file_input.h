@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_scenes_mesh_file_input_h
 #define rsfcycle_scenes_mesh_file_input_h
 

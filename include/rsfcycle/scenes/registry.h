@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_scenes_registry_h
 #define rsfcycle_scenes_registry_h
 
@@ -18,9 +19,9 @@ namespace rsfcycle
     using dealii::ParameterHandler;
 
     /**
-     * The scenes by name (a plain name-to-factory map, STYLE.md "Named
-     * choices"). A new scene is a class in scenes/ and one line in each
-     * function of scenes/registry.cc; nothing outside scenes/ changes.
+     * The scenes by name (a plain name-to-factory map). A new scene is a
+     * class in scenes/ and one line in each function of
+     * scenes/registry.cc; nothing outside scenes/ changes.
      */
 
     /** Names of the scenes, as a Patterns::Selection. */

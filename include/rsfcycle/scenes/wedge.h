@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_scenes_wedge_h
 #define rsfcycle_scenes_wedge_h
 
@@ -14,7 +15,7 @@ namespace rsfcycle
     using physics::Scene;
 
     /**
-     * The laboratory subduction wedge of the paper (MODEL.md §5; §6 in 3D,
+     * The laboratory subduction wedge of the paper (doc/model.md §5; §6 in 3D,
      * where it is extruded in z). In physical coordinates (metres, trench
      * at the origin, x toward the backstop, y up) the wedge is the triangle
      * A = (0, 0), C = (length, 0), B = (length, -depth); it is rotated by the

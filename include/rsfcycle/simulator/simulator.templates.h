@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_simulator_simulator_templates_h
 #define rsfcycle_simulator_simulator_templates_h
 

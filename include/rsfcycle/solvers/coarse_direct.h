@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_solvers_coarse_direct_h
 #define rsfcycle_solvers_coarse_direct_h
 
@@ -23,9 +24,9 @@ namespace rsfcycle
      * every TNNMG iteration (the contact nodes' friction Hessians), so the
      * factorisation must be cheap: a sparse Cholesky factorisation of a 2D
      * coarse mesh of a few hundred vertices takes about a millisecond,
-     * where the dense Householder QR used before grew as n^3 (0.5 s for
-     * 774 vertices). A matrix that CHOLMOD does not accept as positive
-     * definite falls back to Householder least squares.
+     * where a dense Householder QR would grow as n^3. A matrix that CHOLMOD
+     * does not accept as positive definite falls back to Householder least
+     * squares.
      */
     class CoarseDirect : public dealii::MGCoarseGridBase<la::Vector>
     {

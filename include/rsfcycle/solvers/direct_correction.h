@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_solvers_direct_correction_h
 #define rsfcycle_solvers_direct_correction_h
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_solvers_fault_solver_h
 #define rsfcycle_solvers_fault_solver_h
 
@@ -12,7 +13,7 @@ namespace rsfcycle
   {
     /**
      * The spatial problem (15) of an implicit step reduced to the fault
-     * (the Green's-function method's implicit step, MODEL.md §8.1): with
+     * (the Green's-function method's implicit step, doc/model.md §8.1): with
      * the bulk's Schur complement S on the contact's tangential dofs (one
      * per node),
      *   min J(w) = 1/2 w^T A w - r^T w + sum_k phi_k(|w_k|),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_solvers_multigrid_correction_h
 #define rsfcycle_solvers_multigrid_correction_h
 
@@ -24,7 +25,7 @@ namespace rsfcycle
   namespace solvers
   {
     /**
-     * The geometric multigrid linear correction of TNNMG (MODEL.md §4.2
+     * The geometric multigrid linear correction of TNNMG (doc/model.md §4.2
      * step 3) on the levels of the locally refined mesh (local smoothing as
      * in deal.II's step-16: MGTransferPrebuilt, MGConstrainedDoFs, edge
      * matrices at refinement edges).

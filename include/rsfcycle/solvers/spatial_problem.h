@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_solvers_spatial_problem_h
 #define rsfcycle_solvers_spatial_problem_h
 
@@ -63,7 +64,7 @@ namespace rsfcycle
 
     /**
      * The spatial problem (15) for a fixed state, as a convex minimisation
-     * (MODEL.md §4.2):
+     * (doc/model.md §4.2):
      *   min J(v) = 1/2 v^T A v - r^T v + sum_i phi_i(|v_{T_i}|)
      * over all v whose entries marked `fixed` (Dirichlet values, hanging
      * nodes) keep the values they have on entry.
@@ -84,7 +85,7 @@ namespace rsfcycle
     };
 
     /**
-     * The truncated Newton system of one TNNMG iteration (MODEL.md §4.2
+     * The truncated Newton system of one TNNMG iteration (doc/model.md §4.2
      * step 3): (A + H) c = rhs on the components not truncated; c = 0 on the
      * truncated ones. H is block diagonal with one d x d block (row-major)
      * per contact node; blocks of truncated nodes are zero.

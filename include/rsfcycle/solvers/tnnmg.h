@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_solvers_tnnmg_h
 #define rsfcycle_solvers_tnnmg_h
 
@@ -20,7 +21,7 @@ namespace rsfcycle
       /**
        * A sliding contact node whose friction Hessian exceeds this multiple
        * of the diagonal of A is "effectively stuck" and is truncated too
-       * (MODEL.md §4.2, conditioning).
+       * (doc/model.md §4.2, conditioning).
        */
       double truncation_ratio = 1e10;
     };
@@ -39,7 +40,7 @@ namespace rsfcycle
      * the spatial problem: per iteration a nonlinear block Gauss-Seidel sweep
      * with exact node-local friction solves, truncation of the non-smooth
      * and effectively stuck contact nodes, a linear correction, and an exact
-     * line search along the correction (MODEL.md §4.2, steps 1-4).
+     * line search along the correction (doc/model.md §4.2, steps 1-4).
      */
     class TNNMG
     {
@@ -68,7 +69,7 @@ namespace rsfcycle
       /**
        * One nonlinear block Gauss-Seidel sweep over all free dofs: a linear
        * update for dofs without friction, the exact node-local friction
-       * solve for contact nodes (MODEL.md §4.2 step 1).
+       * solve for contact nodes (doc/model.md §4.2 step 1).
        */
       static void
       gauss_seidel_sweep(const SpatialProblem &problem, la::Vector &v);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_time_generalized_alpha_scheme_h
 #define rsfcycle_time_generalized_alpha_scheme_h
 
@@ -11,7 +12,7 @@ namespace rsfcycle
     /**
      * The generalized-alpha scheme of Chung and Hulbert (1993) (`Solver/
      * Time scheme = generalized-alpha`, `Solver/Spectral radius` rho_inf;
-     * MODEL.md §8.3) for inertial runs:
+     * doc/model.md §8.3) for inertial runs:
      *
      *   M a_{n+1-alpha_m} + C v_{n+1-alpha_f} + K u_{n+1-alpha_f}
      *     = f(t_n + (1 - alpha_f) tau),   x_{n+1-alpha} = (1 - alpha) x_{n+1}

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_time_integrator_h
 #define rsfcycle_time_integrator_h
 
@@ -42,7 +43,7 @@ namespace rsfcycle
     /**
      * A time integrator: advances a model's state by one accepted step. The
      * simulator uses only this interface. The implicit step of a model under
-     * step-size control (StepDoubling, LocalExtrapolation: MODEL.md §4.3)
+     * step-size control (StepDoubling, LocalExtrapolation: doc/model.md §4.3)
      * and an ODE integrator that chooses its own steps (ArkodeIntegrator)
      * are integrators; time/integrators.h makes the one that
      * `Time stepping/Integrator` names.

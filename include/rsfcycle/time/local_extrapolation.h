@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_time_local_extrapolation_h
 #define rsfcycle_time_local_extrapolation_h
 
@@ -19,7 +20,7 @@ namespace rsfcycle
      * Step doubling with local extrapolation (`Time stepping/Controller =
      * local-extrapolation`). Every step of tau is computed once whole and
      * once as two halves; the distance (14) between the two results is the
-     * error estimate of step doubling (MODEL.md §4.3). If it is at most the
+     * error estimate of step doubling (doc/model.md §4.3). If it is at most the
      * tolerance, the two half steps (the more accurate result) are the next
      * two accepted steps (the second is returned by the next advance()
      * without a new solve); otherwise tau is halved and the step repeated.
@@ -27,9 +28,9 @@ namespace rsfcycle
      * doubled step, 2^p x estimate (the estimate grows as tau^p: p = 3
      * for the trapezoidal scheme, 2 for theta > 1/2), is at most
      * `doubling_threshold` x tolerance (`Time stepping/Doubling
-     * threshold`, default 1; 0.5 until 2026-11). That is 3 spatial problems per
-     * two accepted steps, against 3 - 4 per accepted step for the paper's
-     * controller, whose coarsening test fails in most steps.
+     * threshold`, default 1). That is 3 spatial problems per two accepted
+     * steps, against 3 - 4 per accepted step for the paper's controller,
+     * whose coarsening test fails in most steps.
      *
      * With `ladder` (`Time stepping/Step sizes = ladder`, the default),
      * step sizes stay on the power-of-two ladder Initial step x 2^k, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_time_ode_model_h
 #define rsfcycle_time_ode_model_h
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_time_step_doubling_h
 #define rsfcycle_time_step_doubling_h
 
@@ -13,7 +14,7 @@ namespace rsfcycle
   namespace time
   {
     /**
-     * Adaptive time stepping by step doubling (MODEL.md §4.3), generic in
+     * Adaptive time stepping by step doubling (doc/model.md §4.3), generic in
      * the state type so that every scene (wedge, spring-slider) uses the same
      * controller. At time t with guess tau:
      *  - coarsening: compare two steps of tau with one of 2 tau; while the

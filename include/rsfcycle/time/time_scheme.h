@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 #ifndef rsfcycle_time_time_scheme_h
 #define rsfcycle_time_time_scheme_h
 
@@ -14,7 +15,7 @@ namespace rsfcycle
      * unknown w of the step: the velocity at which the friction acts, so
      * that the step minimises the convex energy
      * 1/2 w^T A w - r^T w + j(w) of (15) with the step matrix
-     * A = c_M M + c_C C + c_K K (MODEL.md §4.2, §8.3). The step's equation
+     * A = c_M M + c_C C + c_K K (doc/model.md §4.2, §8.3). The step's equation
      * is M a* + C w + K u* = f(t + load_fraction() tau) with
      *   u* = u_n + tau (d[0] v_n + tau d[1] a_n) + c_K w
      *                                             (d = known_displacement),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP1 (Erickson et al. 2020), the one-sided (symmetric) half-space of
 // prm/seas-bp1-qd.prm in the benchmark's coordinates: x >= 0 the distance
 // from the fault, y = -depth. The fault x = 0 carries rate-and-state

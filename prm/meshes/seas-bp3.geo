@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP3 (Erickson et al. 2023, BSSA): a half-space with a planar fault
 // that dips `dip` degrees (30, 60 or 90) from the surface point (0, 0),
 // both sides meshed apart (split nodes: a fault between two deformable

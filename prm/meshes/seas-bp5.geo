@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP5-QD and BP4-QD (Jiang et al. 2022, JGR 127, e2021JB023519) and
 // BP7-QD: one side of a vertical strike-slip fault, for the antisymmetric
 // reduction of prm/seas-bp5-qd.prm, prm/seas-bp4-qd.prm and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // SEAS BP6 (Lambert et al. 2025): a 2D antiplane whole space cut by a
 // vertical fault x = 0, computed as the one side x >= 0 against a rigid
 // mirror (prm/seas-bp6-qd-a.prm). y runs along the fault (the benchmark's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // A kilometre-scale subduction zone for Scene = mesh-file
 // (prm/subduction-2d.prm): the upper plate as a 200 km wedge over a
 // megathrust dipping 15 degrees, in metres, trench at the origin, x

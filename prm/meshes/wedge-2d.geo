@@ -1,4 +1,5 @@
-// The laboratory wedge of the paper (MODEL.md §5) as a gmsh geometry, for
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// The laboratory wedge of the paper (doc/model.md §5) as a gmsh geometry, for
 // Scene = mesh-file (prm/wedge-2d-mesh.prm). Coordinates as in the paper:
 // trench at the origin, x toward the backstop, y up [m].
 //   A = (0, 0) trench, C = (1, 0) top of the backstop, B = (1, -0.27)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Shell helpers of the benchmark scripts (sourced, as common.py is imported).
 
 # die MESSAGE: "SCRIPT: MESSAGE" on standard error, exit status 1.
@@ -7,10 +8,11 @@ die() {
 }
 
 # help_if_asked ARGUMENT: for -h or --help, print the script's header
-# comment (line 2 up to the line `set -e...`) and exit 0.
+# comment (line 2 up to the line `set -e...`, without the licence line) and
+# exit 0.
 help_if_asked() {
     case ${1:-} in -h | --help)
-        sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'
+        sed -n '2,/^set -e/p' "$0" | sed '$d; /SPDX-License-Identifier/d; s/^# \{0,1\}//'
         exit 0
         ;;
     esac

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The set-up that the Green's-function operator tools share
 // (green-function/okada/operator_response.cc, seas-bp3/operator_loading.cc):
 // the fault of a parameter file, built as a run builds it, on one rank.

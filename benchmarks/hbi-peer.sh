@@ -1,11 +1,12 @@
-# Sourced by the HBI peer scripts (seas-bp4/5/6/7/peer/run.sh): the pinned
+# SPDX-License-Identifier: LGPL-2.1-or-later
+# Sourced by the HBI peer scripts (seas-bp3 … seas-bp7, peer/run.sh): the pinned
 # checkout of HBI (github.com/sozawa94/hbi) outside the repository, our
 # patches on it, and its build.
 #
 #   hbi_checkout_and_build PEER_SRC NICE PATCH...
 #
-# PEER_SRC is cloned if absent (from HBI_GIT: default the local mirror,
-# else GitHub) and checked out at HBI_COMMIT; it must be at that commit. A
+# PEER_SRC (required) is cloned if absent (from HBI_GIT, default GitHub)
+# and checked out at HBI_COMMIT; it must be at that commit. A
 # clean tree gets the patches applied in order; a changed tree must be
 # exactly those patches (compared with a fresh worktree that has them). It
 # is built (gfortran via mpifort, -O3 -march=native, under nice NICE) if
@@ -16,12 +17,9 @@ hbi_checkout_and_build() {
   local src=$1 nice=$2
   shift 2
   local patches=("$@") p
+  [ -n "$src" ] || { echo "ERROR: no HBI checkout given (set PEER_SRC)" >&2; exit 2; }
   if [ ! -d "$src/.git" ]; then
-    if [ -z "${HBI_GIT:-}" ]; then
-      if [ -d /work/.mirror/sozawa94+hbi/repo ]; then HBI_GIT=/work/.mirror/sozawa94+hbi/repo
-      else HBI_GIT=https://github.com/sozawa94/hbi.git; fi
-    fi
-    git clone -q "$HBI_GIT" "$src"
+    git clone -q "${HBI_GIT:-https://github.com/sozawa94/hbi.git}" "$src"
     git -C "$src" checkout -q "$HBI_COMMIT"
   fi
   local head

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Mesh convergence of the 2D wedge's event statistics.
 
 The 2D wedge (prm/wedge-2d.prm, Table 1) with 2 global and K local
@@ -24,8 +25,8 @@ level around them) unless `--law centre` asks for the `centre distance` law
 the run's name; the tables and the figure take the runs of one law.
 
 Runs are kept in WORK/<name>/ and not repeated if their summary.txt exists
-(`--rerun` repeats them); results.csv and the table hold every finished run
-in WORK, so that the series can be extended run by run (`--levels 10`).
+(`--rerun` repeats them); runs-<law>.csv and the table hold every finished
+run in WORK, so that the series can be extended run by run (`--levels 10`).
 
 Usage: benchmarks/convergence/run.py [BUILD_DIR] [--levels 4,5,6,7,8,9]
            [--delta 1e-5] [--events 16] [--tight 5] [--jobs 2] [--work DIR]
@@ -101,7 +102,7 @@ LAYERS = float(arg("--layers", "1"))
 DISTANCE = float(arg("--distance", "1.5"))
 LAW_TAG = f"band{BAND:g}x{LAYERS:g}" if LAW == "band" else \
     f"centre{DISTANCE:g}"
-RESULTS = os.path.join(HERE, f"results-{LAW_TAG}.csv")
+RESULTS = os.path.join(HERE, f"runs-{LAW_TAG}.csv")
 FIGURE = os.path.join(ROOT, "doc", "figures", f"convergence-2d-{LAW_TAG}.png")
 MESH = f"""subsection Mesh
   set Refinement law         = band
@@ -184,7 +185,7 @@ def event_statistics(d):
     return row
 
 
-def write_results(rows):
+def write_runs(rows):
     keys = ["run", "level", "delta"] + [c for c, *_ in QUANTITIES] + \
         ["events", "unknowns", "patch_cell_mm", "steps", "wall_s"]
     with open(RESULTS, "w", newline="") as f:
@@ -194,7 +195,7 @@ def write_results(rows):
             w.writerow({k: r[k] for k in keys})
 
 
-def read_results():
+def read_runs():
     rows = list(csv.DictReader(open(RESULTS)))
     for r in rows:
         for k, v in r.items():
@@ -237,8 +238,8 @@ def runs_at_level(level, family=""):
     """Every law's runs at 2 + level and tolerance DELTA, by unknowns."""
     import glob
     rows = []
-    for path in glob.glob(os.path.join(HERE, f"results-{family}*.csv")):
-        tag = os.path.basename(path)[len("results-"):-len(".csv")]
+    for path in glob.glob(os.path.join(HERE, f"runs-{family}*.csv")):
+        tag = os.path.basename(path)[len("runs-"):-len(".csv")]
         for r in csv.DictReader(open(path)):
             if int(float(r["level"])) == level and float(r["delta"]) == DELTA:
                 r = {k: (v if k == "run" else float(v)) for k, v in r.items()}
@@ -248,7 +249,7 @@ def runs_at_level(level, family=""):
 
 
 def table():
-    rows = read_results()
+    rows = read_runs()
     series = sorted([r for r in rows if r["delta"] == DELTA],
                     key=lambda r: r["level"])
     print("| mesh | unknowns | patch cells [mm] | "
@@ -316,7 +317,7 @@ def plot():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = read_results()
+    rows = read_runs()
     delta = DELTA
     series = sorted([r for r in rows if r["delta"] == delta],
                     key=lambda r: r["level"])
@@ -360,6 +361,8 @@ def against(d):
 
 
 def main():
+    if "-h" in sys.argv or "--help" in sys.argv:
+        return print(__doc__)
     if "--against" in sys.argv:
         return against(arg("--against", ""))
     if "--table" in sys.argv:
@@ -385,7 +388,7 @@ def main():
             row.update(run=name, level=int(m.group(1)),
                        delta=float(m.group(2)))
             rows.append(row)
-    write_results(rows)
+    write_runs(rows)
     table()
 
 

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # BP1-QD (prm/seas-bp1-qd.prm) to the end of its first event with both
 # methods of Solver/Bulk on the same mesh, one rank each, one after the
 # other: the wall time of the whole run (set-up included), the first
@@ -7,10 +8,14 @@
 #   benchmarks/green-function/run.sh BUILD_DIR LOCAL_REFINEMENTS [volume|green|both]
 # (3: 200 m cells, 4: 100 m, 5: 50 m, 6: 25 m, the .prm's.) Writes
 # benchmarks/green-function/runs/<method>-<refinements>/ and one line per
-# run to benchmarks/green-function/runs/results.txt.
+# run to benchmarks/green-function/runs/first-events.txt (not tracked).
 set -eu
-build=$1; levels=$2; which=${3:-both}
 root=$(cd "$(dirname "$0")/../.." && pwd)
+# die, help_if_asked
+. "$root/benchmarks/common.sh"
+help_if_asked "${1:-}"
+[ $# -ge 2 ] || die "usage: run.sh BUILD_DIR LOCAL_REFINEMENTS [volume|green|both]"
+build=$1; levels=$2; which=${3:-both}
 out=$root/benchmarks/green-function/runs
 mkdir -p "$out"
 run() { # method, extra prm lines
@@ -34,7 +39,7 @@ PRM
   local start=$(date +%s.%N)
   nice -n 19 "$build/rsfcycle" "$out/$method-$levels.prm" > "$out/$method-$levels.log" 2>&1
   local end=$(date +%s.%N)
-  python3 - "$dir/events.csv" "$method" "$levels" "$start" "$end" <<'PY' | tee -a "$out/results.txt"
+  python3 - "$dir/events.csv" "$method" "$levels" "$start" "$end" <<'PY' | tee -a "$out/first-events.txt"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 e = rows[0]

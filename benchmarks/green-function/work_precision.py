@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Work-precision of the Green's-function method on SEAS BP1-QD.
 
 Runs prm/seas-bp1-qd.prm at 50 m cells (Mesh/Local refinements = 5, 800
@@ -33,8 +34,11 @@ Usage (from the repository root):
   /usr/bin/python3 benchmarks/green-function/work_precision.py build/rsfcycle \
       [--out DIR] [--end 520] [--volume] [--implicit 1e-3,1e-4,...]
       [--only LABEL,...] [--cpu N]
-Writes DIR/results.csv (appending, one row per run label; an existing label
-is not run again), DIR/work-precision.png and prints the table.
+Writes DIR/runs.csv (appending, one row per run label; an existing label
+is not run again), DIR/work-precision.png and prints the table; DIR
+defaults to benchmarks/green-function/runs/work-precision (not tracked).
+The committed table of these runs is benchmarks/green-function/
+work-precision.csv.
 """
 import argparse
 import csv
@@ -103,7 +107,7 @@ def events(folder):
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("exe")
-    p.add_argument("--out", default="benchmarks/green-function/work-precision")
+    p.add_argument("--out", default="benchmarks/green-function/runs/work-precision")
     p.add_argument("--end", type=float, default=520.)
     p.add_argument("--rk", default="1e-4,1e-5,1e-6,1e-7")
     p.add_argument("--compression", default="1e-2,1e-3,1e-4,1e-6,1e-8")
@@ -132,10 +136,10 @@ def main():
         runs.append(("volume", "volume (shipped)", VOLUME))
     only = set(a.only.split(",")) - {""}
 
-    results_file = os.path.join(a.out, "results.csv")
+    runs_file = os.path.join(a.out, "runs.csv")
     done = {}
-    if os.path.exists(results_file):
-        done = {r["label"]: r for r in csv.DictReader(open(results_file))}
+    if os.path.exists(runs_file):
+        done = {r["label"]: r for r in csv.DictReader(open(runs_file))}
     fields = ["label", "family", "wall_s", "cpu_s", "first_event_s",
               "last_interval_s", "n_events"]
     for label, family, lines in runs:
@@ -150,8 +154,8 @@ def main():
                "cpu_s": f"{cpu:.2f}", "first_event_s": f"{e[0]:.6f}",
                "last_interval_s": f"{e[-1] - e[-2]:.6f}" if len(e) > 1 else "nan",
                "n_events": len(e)}
-        new = not os.path.exists(results_file)
-        with open(results_file, "a") as f:
+        new = not os.path.exists(runs_file)
+        with open(runs_file, "a") as f:
             w = csv.DictWriter(f, fields)
             if new:
                 w.writeheader()

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The normal stress on the base of the loaded wedge, from VTU snapshots.
 
 rsfcycle holds the normal stress on the base fixed at its value in the
-static gravity equilibrium (frictionless base, backstop fixed; MODEL.md
-section 2). This script computes the normal stress that the wedge's own
+static gravity equilibrium (frictionless base, backstop fixed;
+doc/model.md §5). This script computes the normal stress that the wedge's own
 stress field exerts on the base at later times, when the backstop has
 compressed it, from the displacement and velocity of the solution
 snapshots (built-in wedge: rotated frame, base on y = 0):
@@ -101,6 +102,12 @@ def snapshots(rundir):
 
 
 def main():
+    if len(sys.argv) < 2 or sys.argv[1].startswith("-"):
+        if "-h" in sys.argv or "--help" in sys.argv:
+            print(__doc__)
+            return
+        sys.exit("normal_stress.py: usage: normal_stress.py RUNDIR "
+                 "[--times t1,t2,...] (RUNDIR: a run with VTU snapshots)")
     rundir = sys.argv[1]
     files = snapshots(rundir)
     times = [float(t) for t in (sys.argv[sys.argv.index("--times") + 1]

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Why 90 events in 1000 s where the paper reports 79 (issue 42).
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Why 90 events in 1000 s where the paper reports 79.
 
 Sensitivity of the 2D laboratory wedge's event sequence (first-event time,
 recurrence, events starting in [0, 1000] s, rupture width, peak slip rate,
@@ -19,9 +20,11 @@ the patch); they are compared with that scene's own default run
 
 Every variant is a small .prm that includes prm/wedge-2d.prm (or
 prm/wedge-2d-mesh.prm) and overrides one thing. Run folders live outside
-the repository, in WORK/<name>/ (default /work/runs/paper-events); a run
-is not repeated when its log.txt ends with the run's summary (`--rerun`
-repeats it). Runs go one after the other, on one process, under nice.
+the repository, in WORK/<name>/ (`--work WORK` or the environment's
+PAPER_EVENTS_WORK; required to run, for --thresholds and for the
+normal-stress figure); a run is not repeated when its log.txt ends with the
+run's summary (`--rerun` repeats it). Runs go one after the other, on one
+process, under nice.
 
 The event definition (the threshold of doc/events.md) does not change the
 dynamics: its alternatives are evaluated from the default run's
@@ -29,9 +32,9 @@ time-series.csv and base-profile.csv (`--thresholds`).
 
 Usage (from anywhere; the binary runs in the repository's root, where
 prm/wedge-2d-mesh.prm's mesh path resolves):
-  benchmarks/paper-events/run.py [--exe BINARY] [--work DIR] [--only a,b]
+  benchmarks/paper-events/run.py [--exe BINARY] --work DIR [--only a,b]
                                  [--rerun]     # run what is missing, table
-  benchmarks/paper-events/run.py --table       # results.csv, results.md
+  benchmarks/paper-events/run.py --table [--work DIR]   # runs.csv, runs.md
   benchmarks/paper-events/run.py --plot        # figures/*.png
   benchmarks/paper-events/run.py --thresholds [--thresholds-run a,b]
                                  # event definitions (thresholds.*)
@@ -59,9 +62,18 @@ def arg(name, default):
 # the table was made with the binary of commit 487b033 (its default run is
 # bitwise that of bc0b158, README.md); a new run uses the build's
 EXE = arg("--exe", os.path.join(ROOT, "build", "rsfcycle"))
-WORK = arg("--work", "/work/runs/paper-events")
+WORK = arg("--work", os.environ.get("PAPER_EVENTS_WORK", ""))
 T_END = 1000.0
-RESULTS = os.path.join(HERE, "results.csv")
+RUNS = os.path.join(HERE, "runs.csv")
+LICENCE = "<!-- SPDX-License-Identifier: LGPL-2.1-or-later -->\n"
+
+
+def work():
+    """The run folders' location; exits with one line when not given."""
+    if not WORK:
+        sys.exit("run.py: where are the run folders? Give --work DIR or set "
+                 "PAPER_EVENTS_WORK=DIR")
+    return WORK
 FIGURES = os.path.join(HERE, "figures")
 
 # The paper's counts (section 3.2): 79 simulated events, 50 in the
@@ -217,7 +229,7 @@ def prm_text(name, base, overrides):
     src = "prm/wedge-2d.prm" if base == "wedge" else "prm/wedge-2d-mesh.prm"
     return f"""# benchmarks/paper-events/run.py: variant {name}
 include {ROOT}/{src}
-set Output directory = {os.path.join(WORK, name)}
+set Output directory = {os.path.join(work(), name)}
 set End time         = {T_END:g}
 subsection Output
   set Write VTU = false
@@ -231,7 +243,7 @@ def finished(d):
 
 
 def run(name, base, overrides):
-    d = os.path.join(WORK, name)
+    d = os.path.join(work(), name)
     if finished(d) and "--rerun" not in sys.argv:
         return
     os.makedirs(os.path.join(WORK, "prm"), exist_ok=True)
@@ -287,12 +299,13 @@ def statistics(name):
 
 def collect():
     """The rows of the finished runs in WORK; a variant whose run folder is
-    not (or no longer) there keeps its row of results.csv."""
-    previous = {r["name"]: r for r in read_results()} \
-        if os.path.exists(RESULTS) else {}
+    not (or no longer) there, or every variant without WORK, keeps its row
+    of runs.csv."""
+    previous = {r["name"]: r for r in read_runs()} \
+        if os.path.exists(RUNS) else {}
     rows = []
     for name, base, group, choice, reading, _ in VARIANTS:
-        if not finished(os.path.join(WORK, name)):
+        if not WORK or not finished(os.path.join(WORK, name)):
             if name in previous:
                 rows.append(previous[name])
             continue
@@ -301,7 +314,7 @@ def collect():
                  reading=reading)
         rows.append(r)
     keys = ["name", "scene", "group", "choice", "reading"] + COLUMNS
-    with open(RESULTS, "w", newline="") as f:
+    with open(RUNS, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
         for r in rows:
@@ -310,8 +323,8 @@ def collect():
     return rows
 
 
-def read_results():
-    rows = list(csv.DictReader(open(RESULTS)))
+def read_runs():
+    rows = list(csv.DictReader(open(RUNS)))
     for r in rows:
         for k in COLUMNS:
             r[k] = float(r[k])
@@ -319,18 +332,18 @@ def read_results():
 
 
 def table(rows=None):
-    """The markdown table, printed and written to results.md."""
+    """The markdown table, printed and written to runs.md."""
     import contextlib
     import io
     buf = io.StringIO()
     with contextlib.redirect_stdout(buf):
         _table(rows)
-    open(os.path.join(HERE, "results.md"), "w").write(buf.getvalue())
+    open(os.path.join(HERE, "runs.md"), "w").write(LICENCE + buf.getvalue())
     print(buf.getvalue(), end="")
 
 
 def _table(rows=None):
-    rows = rows or read_results()
+    rows = rows or read_runs()
     by = {r["name"]: r for r in rows}
     print("| reading | scene | first event [s] | recurrence [s] (range) | "
           "events in 1000 s | rupture width [m] | peak slip rate [mm/s] | "
@@ -376,11 +389,12 @@ def thresholds(names=("default", "sigma-x1.05", "a-outside-0.015")):
     max slip rate) and base-profile.csv (rates per node); no new runs.
     Starts are the first accepted step above the threshold (events.csv
     interpolates them). Written to thresholds.csv and thresholds.md."""
+    work()
     import plot_wedge
     v0 = 50e-6
     rows = []
     for name in names:
-        d = os.path.join(WORK, name)
+        d = os.path.join(work(), name)
         if not finished(d):
             continue
         ts = plot_wedge.read_time_series(d)
@@ -419,7 +433,7 @@ def thresholds(names=("default", "sigma-x1.05", "a-outside-0.015")):
                      f"{fmt(r['rupture_width_m'], '.3f')} | "
                      f"{fmt(r['duration_s'], '.3f')} |")
     text = "\n".join(lines) + "\n"
-    open(os.path.join(HERE, "thresholds.md"), "w").write(text)
+    open(os.path.join(HERE, "thresholds.md"), "w").write(LICENCE + text)
     print(text, end="")
     return rows
 
@@ -428,7 +442,7 @@ def plot(rows=None):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = rows or read_results()
+    rows = rows or read_runs()
     by = {r["name"]: r for r in rows}
     os.makedirs(FIGURES, exist_ok=True)
     labels = [r["name"] + (" *" if r["scene"] == "mesh" else "")
@@ -498,10 +512,10 @@ def plot_normal_stress(rows=None):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import normal_stress
-    rows = rows or read_results()
+    rows = rows or read_runs()
     by = {r["name"]: r for r in rows}
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.4))
-    vtu = os.path.join(WORK, "default-vtu")
+    vtu = os.path.join(WORK, "default-vtu") if WORK else ""
     if os.path.isdir(os.path.join(vtu, "solution")):
         files = normal_stress.snapshots(vtu)
         ref, _ = normal_stress.base_stress(files[0])
@@ -550,6 +564,9 @@ def plot_normal_stress(rows=None):
 
 
 def main():
+    if "-h" in sys.argv or "--help" in sys.argv:
+        print(__doc__)
+        return
     if "--list" in sys.argv:
         for name, base, group, choice, reading, over in VARIANTS:
             print(f"{name} [{base}, {group}] {choice}: {reading}")
@@ -565,9 +582,11 @@ def main():
         rows = collect()
         plot(rows)
         # panel (a) needs the snapshots of the default-vtu run
-        if os.path.isdir(os.path.join(WORK, "default-vtu", "solution")):
+        if WORK and os.path.isdir(os.path.join(WORK, "default-vtu",
+                                                "solution")):
             plot_normal_stress(rows)
         return
+    work()
     only = arg("--only", "")
     for name, base, group, choice, reading, over in VARIANTS:
         if only and name not in only.split(","):

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Compare the event catalogues (events.csv) of runs on different numbers
 of MPI ranks against the first: number of events, largest difference of the
 event starts [ms], of the peak slip rates and of the slips [%].
@@ -16,6 +17,12 @@ def catalogue(run):
 
 def main():
     runs = sys.argv[1:]
+    if runs[:1] in (["-h"], ["--help"]):
+        print(__doc__)
+        return 0
+    if len(runs) < 2:
+        sys.exit("compare_catalogues.py: usage: compare_catalogues.py "
+                 "RUN_DIR_1 RUN_DIR_2 ...")
     ref = catalogue(runs[0])
     print(f"{runs[0]}: {len(ref)} events")
     ok = True

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Distributed runs on 1, 2 (and 4, oversubscribed) MPI ranks, side by side
-in one invocation (issue 14):
+in one invocation:
 
   2d   prm/wedge-2d-paper.prm (2 + 8 refinements, 30,232 unknowns) from
        t = 0 to --end-2d (default 530 s: the interseismic loading and the
@@ -22,11 +23,13 @@ problem, multigrid cycles per TNNMG iteration, fixed-point iterations per
 step (max) and the events (start, peak slip rate, slip). Runs of one
 invocation follow each other on the same machine: read the ratios.
 
-Usage: benchmarks/scaling/run.py [BUILD_DIR] [--parts 2d,3d,big]
+Usage: benchmarks/scaling/run.py [BUILD_DIR] --work DIR [--parts 2d,3d,big]
            [--ranks 1,2,4] [--end-2d T] [--end-3d T] [--end-big T]
-           [--work DIR]
        benchmarks/scaling/run.py --table | --plot
-Results: benchmarks/scaling/results.csv (one row per run).
+DIR (or the environment's SCALING_WORK) holds the run folders and a copy of
+the binary. Runs: benchmarks/scaling/runs.csv (one row per run, rows of
+earlier invocations kept); --plot draws benchmarks/scaling/figures/
+scaling.png.
 """
 import csv
 import os
@@ -38,7 +41,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-RESULTS = os.path.join(HERE, "results.csv")
+RUNS = os.path.join(HERE, "runs.csv")
 FIELDS = ["case", "ranks", "unknowns", "end_time_s", "wall_s", "loop_s",
           "setup_s", "steps", "problems", "tnnmg_per_problem",
           "cycles_per_tnnmg", "max_fixed_point", "events", "first_start_s",
@@ -143,13 +146,16 @@ def one_run(exe, case, ranks, end, work):
 
 def main():
     args = sys.argv[1:]
+    if "-h" in args or "--help" in args:
+        print(__doc__)
+        return
     if "--table" in args:
         return table()
     if "--plot" in args:
         return plot()
     opts = {"--parts": "2d,3d,big", "--ranks": "1,2,4", "--end-2d": "530",
             "--end-3d": "40", "--end-big": "0.05",
-            "--work": "/tmp/rsfcycle-scaling"}
+            "--work": os.environ.get("SCALING_WORK", "")}
     build = os.path.join(ROOT, "build")
     i = 0
     while i < len(args):
@@ -160,6 +166,9 @@ def main():
             build = args[i]
             i += 1
     work = opts["--work"]
+    if not work:
+        sys.exit("run.py: where should the runs go? Give --work DIR or set "
+                 "SCALING_WORK=DIR")
     os.makedirs(work, exist_ok=True)
     exe = os.path.join(work, "rsfcycle")
     shutil.copy(os.path.join(build, "rsfcycle"), exe)
@@ -172,13 +181,13 @@ def main():
             print(", ".join(f"{k}={row[k]}" for k in FIELDS), flush=True)
             results.append(row)
     old = []
-    if os.path.exists(RESULTS):
+    if os.path.exists(RUNS):
         done = {(r["case"], r["ranks"]) for r in
                 ({"case": x["case"], "ranks": str(x["ranks"])}
                  for x in results)}
-        old = [r for r in csv.DictReader(open(RESULTS))
+        old = [r for r in csv.DictReader(open(RUNS))
                if (r["case"], r["ranks"]) not in done]
-    with open(RESULTS, "w", newline="") as f:
+    with open(RUNS, "w", newline="") as f:
         w = csv.DictWriter(f, FIELDS)
         w.writeheader()
         for r in old + results:
@@ -186,7 +195,7 @@ def main():
 
 
 def table():
-    rows = list(csv.DictReader(open(RESULTS)))
+    rows = list(csv.DictReader(open(RUNS)))
     head = ["case", "ranks", "unknowns", "loop_s", "speed-up", "steps",
             "problems", "tnnmg_per_problem", "cycles_per_tnnmg",
             "max_fixed_point", "events", "first_start_s",
@@ -205,7 +214,7 @@ def plot():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = list(csv.DictReader(open(RESULTS)))
+    rows = list(csv.DictReader(open(RUNS)))
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
     for case, marker in (("2d", "o"), ("3d", "s")):
         sel = sorted((r for r in rows if r["case"] == case),
@@ -230,8 +239,8 @@ def plot():
     ax[1].set_ylabel("iterations")
     ax[1].legend(fontsize=7)
     fig.tight_layout()
-    os.makedirs(os.path.join(ROOT, "doc", "figures"), exist_ok=True)
-    fig.savefig(os.path.join(HERE, "scaling.png"), dpi=120)
+    os.makedirs(os.path.join(HERE, "figures"), exist_ok=True)
+    fig.savefig(os.path.join(HERE, "figures", "scaling.png"), dpi=120)
 
 
 if __name__ == "__main__":

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Compare SEAS BP1-QD runs of rsfcycle with a peer run (QDYN).
 
 Usage:
@@ -21,7 +22,7 @@ the first `--events` events one by one against that run's.
 Writes DIR/max-slip-rate.png (log10 max V over time),
 DIR/surface-slip.png (surface slip over time) and DIR/recurrence.png
 (every interval at its event's start, and its difference in % from the
-first run's interval of the same number; the band is the issue's 0.5 %).
+first run's interval of the same number; the band is ±0.5 %).
 """
 import argparse
 import os

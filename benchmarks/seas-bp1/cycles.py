@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Cycle by cycle: where in the seismic cycle do rsfcycle runs of BP1-QD
 leave a peer's (QDYN's)?
 
@@ -10,7 +11,7 @@ For cycle k (from the start of event k to that of event k + 1) it prints
 log10 V [m/s] at the fault stations `--depths` [km] `--lags` years after
 the start of event k, the peer's first, then every run's. Events are where
 the maximum slip rate exceeds 1 mm/s (compare.py's definition). SERIES.csv:
-the peer's series (README, "The peer run") with the columns t_yr (QDYN's
+the peer's series (qdyn/run.sh writes it) with the columns t_yr (QDYN's
 365-day years), max_slip_rate and V_12p5km, V_15km, ... [m/s]; RUNDIR: an
 rsfcycle run folder with the SEAS files global.dat and fltst_dpXXX.
 """

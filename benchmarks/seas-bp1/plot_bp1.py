@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Figures of SEAS BP1 runs from their SEAS files, as in the benchmark
 paper (Erickson et al. 2020): slip contours and on-fault station series.
 

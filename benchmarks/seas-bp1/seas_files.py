@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Reading the SEAS benchmarks' plain-text files (shared by compare.py and
 plot_bp1.py)."""
 import numpy as np

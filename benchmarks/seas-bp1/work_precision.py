@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Work-precision of BP1-FD's first event: start, peak slip rate and slip
 against the wall time to the event's end, one point per rsfcycle run folder.
 
@@ -8,9 +9,9 @@ Each run folder's events.csv gives the first event (rows starting within
 --merge seconds of the previous row's end are merged into it, for runs made
 without `Output/Event merge time`); log.txt gives the wall time: that of the
 first progress line after the first event ended (or the timer table's total
-if the run stopped there). SCycle's 50 m values (README, "BP1-FD against
-SCycle") are drawn as the reference lines. Prints a Markdown table and
-writes work-precision.png.
+if the run stopped there). SCycle's 50 m first event (README.md) gives
+the reference lines. Prints a Markdown table and writes
+work-precision.png.
 """
 import argparse
 import csv

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Time two rsfcycle binaries on the same stretch of a run, side by side:
 # both resume a copy of RUN (a run folder whose checkpoint lies where the
 # cost is wanted, e.g. inside an event) and step for SPAN seconds of

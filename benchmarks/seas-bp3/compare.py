@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """SEAS BP3-QD: rsfcycle's run against HBI's (benchmarks/seas-bp3/peer).
 
     compare.py RSFCYCLE_RUN HBI_RUN [--until YEARS]

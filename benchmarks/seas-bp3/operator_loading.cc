@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The BP3 operator's response to a slip reaching the surface, against the
-// half-space closed form (README.md here, "How accurate the operator is"
-// and "The surface end against the closed form").
+// half-space closed form (README.md here, "Resolution and distance from
+// converged" and "The surface end against the closed form").
 //
 //   bp3_operator_loading PRM DIP [GLOBAL LOCAL [PROFILE W]] > loading.csv
 //

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """SEAS BP3-QD: the event sequences of several runs side by side.
 
     sequence.py NAME=RUN [NAME=RUN ...] [--until YEARS]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """HBI's discretization of the slip-induced normal stress near the surface,
 against the half-space closed form (README.md, "The surface end against the
 closed form"; bp3_operator_loading gives rsfcycle's side).

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # The Green's-function operator build of BP5-QD on N ranks: wall time and
 # the machine's peak memory of one or more rsfcycle binaries, run in turn
 # (A B A B ...), each on the shipped prm/seas-bp5-qd.prm with

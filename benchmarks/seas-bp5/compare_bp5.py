@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Compare SEAS BP5-QD runs: rsfcycle's run folders and the peer's SEAS files.
 
 Usage:

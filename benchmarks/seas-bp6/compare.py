@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """SEAS BP6 results of several runs side by side (README.md in this folder).
 
 Usage: compare.py [--front SLIP] RUN [RUN ...]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Figures of SEAS BP6 runs side by side (README.md in this folder).
 
 Usage: plot_bp6.py OUT.png TITLE RUN [RUN ...]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Linear corrections and rate/state couplings of rsfcycle, compared in one run.
 
 For each refinement depth of the 2D wedge (prm/wedge-2d.prm with
@@ -15,14 +16,14 @@ Only the window is measured: wall time, time steps, spatial problems
 (TNNMG solves), fixed-point iterations per step (max, mean), TNNMG
 iterations and multigrid cycles per step and per spatial problem (max,
 mean), time per cycle per unknown. All runs share the machine in this one
-script, so the ratios are what to read; results.csv holds every row,
+script, so the ratios are what to read; runs.csv holds every row,
 doc/figures/solvers-cost.png the cost
 against N.
 
 Usage: benchmarks/solvers/run.py [BUILD_DIR] [--depths 2,3,4,5,6]
                                  [--work DIR] [--reuse-preload]
                                  [--variants multigrid,direct] [--append]
-       benchmarks/solvers/run.py --table    (markdown tables of results.csv)
+       benchmarks/solvers/run.py --table    (markdown tables of runs.csv)
        benchmarks/solvers/run.py --plot     (doc/figures/solvers-cost.png)
 """
 import csv
@@ -55,7 +56,7 @@ WORK = arg("--work", os.path.join(HERE, "work"))
 REUSE = "--reuse-preload" in sys.argv
 # AMG is compared on the coarser meshes only (it crawls beyond, see README)
 AMG_MAX_DEPTH = 5
-# --append: keep the rows of results.csv for other depths;
+# --append: keep the rows of runs.csv for other depths;
 # --variants a,b: run only these alternatives
 APPEND = "--append" in sys.argv
 ONLY = [v for v in arg("--variants", "").split(",") if v]
@@ -120,7 +121,7 @@ def main():
     results = []
     if APPEND:
         results = [r for r in csv.DictReader(open(os.path.join(HERE,
-                                                               "results.csv")))
+                                                               "runs.csv")))
                    if int(r["depth"]) not in DEPTHS]
     for depth in DEPTHS:
         pre = os.path.join(WORK, f"pre-{depth}")
@@ -164,7 +165,7 @@ end"""))
             r = window(depth, name, entries)
             results.append(r)
             print(r, flush=True)
-            with open(os.path.join(HERE, "results.csv"), "w") as f:
+            with open(os.path.join(HERE, "runs.csv"), "w") as f:
                 w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
                 w.writeheader()
                 w.writerows(results)
@@ -200,7 +201,7 @@ def plot(results):
 
 
 def table(rows):
-    """Markdown tables of results.csv (for the README)."""
+    """Markdown tables of runs.csv (for the README)."""
     print("| depth | N | correction | wall [s] | steps | FP max/mean | "
           "TNNMG/step mean | cycles/step max/mean | µs/cycle/N | "
           "wall / multigrid |")
@@ -244,10 +245,13 @@ def table(rows):
 
 
 if __name__ == "__main__":
+    if "-h" in sys.argv or "--help" in sys.argv:
+        print(__doc__)
+        sys.exit(0)
     if "--table" in sys.argv:
-        table(list(csv.DictReader(open(os.path.join(HERE, "results.csv")))))
+        table(list(csv.DictReader(open(os.path.join(HERE, "runs.csv")))))
     elif "--plot" in sys.argv:
-        rows = list(csv.DictReader(open(os.path.join(HERE, "results.csv"))))
+        rows = list(csv.DictReader(open(os.path.join(HERE, "runs.csv"))))
         for r in rows:
             for key in ["unknowns", "wall_s", "cycles_per_step_mean",
                         "cycles_per_step_max"]:

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Stiff / extreme-case matrix of the spring-slider (issue 4, item 5).
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Stiff / extreme-case matrix of the spring-slider.
 
 Every case is prm/spring-slider.prm (quasi-dynamic stick-slip block:
 a = 0.01, b = 0.015, mu* = 0.6, V* = 1e-6 m/s, L = 1e-5 m,
@@ -16,8 +17,8 @@ the outcome (finished / stopped, with the one-line diagnosis / timeout /
 crashed), the accepted steps, the smallest and largest step, the wall time
 of the process, and whether any field of time-series.csv (every column,
 every row) is non-finite (nan / inf, or not a number at all). events.csv
-and the "Final:" line are checked too. Writes results.csv and the table of
-README.md (between the markers).
+and the "Final:" line are checked too. Writes runs.csv and its table
+runs.md (runs-runge-kutta.* with --integrator runge-kutta).
 
     /usr/bin/python3 benchmarks/stiff/run.py [path/to/rsfcycle] [case ...]
 """
@@ -36,8 +37,8 @@ TIMEOUT = 60  # wall-clock limit per case [s]
 EXE = (ARGS.pop(0) if ARGS and not ARGS[0].startswith("-") and
        os.path.isfile(ARGS[0]) else os.path.join(ROOT, "build", "rsfcycle"))
 # --integrator runge-kutta: every case with ARKODE's explicit Dormand-Prince
-# 5(4) on the model's ODE instead of the implicit step (results-runge-kutta.csv
-# and the second table of README.md)
+# 5(4) on the model's ODE instead of the implicit step (runs-runge-kutta.csv
+# and runs-runge-kutta.md)
 INTEGRATOR = "implicit"
 if "--integrator" in ARGS:
     i = ARGS.index("--integrator")
@@ -264,6 +265,9 @@ def run(name, what, end, max_step, p):
 
 
 def main():
+    if "-h" in ARGS or "--help" in ARGS:
+        print(__doc__)
+        return
     os.makedirs(WORK, exist_ok=True)
     matrix()
     rows = []
@@ -279,7 +283,7 @@ def main():
     if ONLY:
         return
     suffix = "" if INTEGRATOR == "implicit" else "-" + INTEGRATOR
-    with open(os.path.join(HERE, f"results{suffix}.csv"), "w", newline="") as f:
+    with open(os.path.join(HERE, f"runs{suffix}.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "set-up", "end time [s]", "outcome", "steps",
                     "min step [s]", "max step [s]", "wall time [s]",
@@ -309,15 +313,9 @@ def main():
                      f"{r['events']} | "
                      f"{vm} | {nf} |")
     table = "\n".join(lines)
-    readme = os.path.join(HERE, "README.md")
-    if os.path.exists(readme):
-        text = open(readme).read()
-        begin, end = (f"<!-- table{suffix} begin -->",
-                      f"<!-- table{suffix} end -->")
-        if begin in text and end in text:
-            text = (text[:text.index(begin) + len(begin)] + "\n" + table +
-                    "\n" + text[text.index(end):])
-            open(readme, "w").write(text)
+    with open(os.path.join(HERE, f"runs{suffix}.md"), "w") as f:
+        f.write("<!-- SPDX-License-Identifier: LGPL-2.1-or-later -->\n" +
+                table + "\n")
     print(table)
 
 

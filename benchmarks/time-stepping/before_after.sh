@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Before and after a restructuring: the same runs with two binaries, timed
 # in turn by farm-bench (A B A B ..., the ratio taken pair by pair), and
 # their outputs compared bitwise.
@@ -9,10 +10,17 @@
 #       the first events), 3 pairs.
 # Each binary reads the parameter files of its own commit (OLD_COMMIT's
 # from git, the working tree's for the new one), since entries moved.
-# Usage: bash benchmarks/time-stepping/before_after.sh OLD_BINARY OLD_COMMIT NEW_BINARY [WORK]
+# Usage: bash benchmarks/time-stepping/before_after.sh OLD_BINARY OLD_COMMIT NEW_BINARY WORK
+# WORK (or the environment's BEFORE_AFTER_WORK): a scratch folder, emptied
+# first. farm-bench must be on the PATH.
 set -euo pipefail
-old=$1; old_commit=$2; new=$3; work=${4:-/tmp/before-after}
 src=$(cd "$(dirname "$0")/../.." && pwd)
+# die, help_if_asked
+. "$src/benchmarks/common.sh"
+help_if_asked "${1:-}"
+[ $# -ge 3 ] || die "usage: before_after.sh OLD_BINARY OLD_COMMIT NEW_BINARY WORK"
+old=$1; old_commit=$2; new=$3; work=${4:-${BEFORE_AFTER_WORK:-}}
+[ -n "$work" ] || die "give a scratch folder: the fourth argument WORK or BEFORE_AFTER_WORK=DIR"
 rm -rf "$work"; mkdir -p "$work/old" "$work/new"
 git -C "$src" show "$old_commit:prm/spring-slider.prm" > "$work/old/spring-slider.prm"
 git -C "$src" show "$old_commit:prm/wedge-2d.prm" > "$work/old/wedge-2d.prm"

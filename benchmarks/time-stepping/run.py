@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Step-size controllers side by side: the paper's step doubling against
 step doubling with local extrapolation, at several tolerances, on
 
@@ -16,7 +17,7 @@ Every run has Fixed-point tolerance = Tolerance. Reported per run: spatial
 problems, steps, wall time of the time loop (TimerOutput "Time stepping";
 the spring-slider: the minimum of 3 runs), fixed-point and TNNMG iterations
 per spatial problem, and the errors. All runs of one invocation share the
-machine, so ratios are what to read. Writes results.csv and
+machine, so ratios are what to read. Writes runs.csv and
 doc/figures/time-stepping.png; `--table` prints the table of README.md.
 
 Local extrapolation runs with its default (Step sizes = ladder, Doubling
@@ -95,7 +96,7 @@ PARTS = arg("--parts", "slider,wedge").split(",")
 DEPTH = int(arg("--depth", "6"))
 WORK = arg("--work", os.path.join(HERE, "work"))
 REUSE = "--reuse-preload" in sys.argv
-RESULTS = os.path.join(HERE, "results.csv")
+RUNS = os.path.join(HERE, "runs.csv")
 
 
 def run(args, log):
@@ -270,7 +271,7 @@ def label(r):
 
 
 def table():
-    rows = list(csv.DictReader(open(RESULTS)))
+    rows = list(csv.DictReader(open(RUNS)))
     print("| case | controller | correction | δ = ε | steps | "
           "spatial problems | FP/step | TNNMG/problem | wall [s] | "
           "start error [s] | peak error | period error | slip error |")
@@ -335,7 +336,7 @@ def plot():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = [r for r in csv.DictReader(open(RESULTS))
+    rows = [r for r in csv.DictReader(open(RUNS))
             if r["extrapolated_start"] != "False"
             and r["correction"] in ("", "direct")]
     cases = sorted({r["case"] for r in rows}, reverse=True)
@@ -372,6 +373,8 @@ def plot():
 
 
 def main():
+    if "-h" in sys.argv or "--help" in sys.argv:
+        return print(__doc__)
     if "--table" in sys.argv:
         return table()
     if "--plot" in sys.argv:
@@ -382,11 +385,11 @@ def main():
     if "wedge" in PARTS:
         rows += wedge_part()
     keep = []
-    if os.path.exists(RESULTS):  # keep the rows of parts not rerun
+    if os.path.exists(RUNS):  # keep the rows of parts not rerun
         done = {r["case"] for r in rows}
-        keep = [r for r in csv.DictReader(open(RESULTS))
+        keep = [r for r in csv.DictReader(open(RUNS))
                 if r["case"] not in done]
-    with open(RESULTS, "w", newline="") as f:
+    with open(RUNS, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=FIELDS)
         w.writeheader()
         for r in keep + rows:

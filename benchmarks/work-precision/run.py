@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Work-precision of the spring-slider (issue 4): error against wall time.
+# SPDX-License-Identifier: LGPL-2.1-or-later
+"""Work-precision of the spring-slider: error against wall time.
 
 Runs the stick-slip spring-slider of prm/spring-slider.prm (quasi-dynamic,
 k = k_crit / 2, ageing law) over 1000 s (4 events) with
@@ -10,8 +11,8 @@ k = k_crit / 2, ageing law) over 1000 s (4 events) with
 and compares each with the reference, ARKODE at 1e-12: the error of the
 slip at t = 1000 s and of the mean recurrence time (events 2-4). The wall
 time is that of the time loop as the run reports it (without program
-start-up and parameter parsing). Writes results.csv, work-precision.png and
-the table of README.md (between the markers).
+start-up and parameter parsing). Writes runs.csv, its table runs.md and
+figures/work-precision.png.
 
     /usr/bin/python3 benchmarks/work-precision/run.py [path/to/rsfcycle]
 """
@@ -22,6 +23,9 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+if "-h" in sys.argv or "--help" in sys.argv:
+    print(__doc__)
+    sys.exit(0)
 EXE = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build",
                                                           "rsfcycle")
 WORK = os.path.join(HERE, "runs")
@@ -88,7 +92,7 @@ def main():
         r["slip_error"] = abs(r["slip"] - ref["slip"])
         r["period_error"] = abs(r["period"] - ref["period"])
 
-    with open(os.path.join(HERE, "results.csv"), "w") as f:
+    with open(os.path.join(HERE, "runs.csv"), "w") as f:
         f.write("integrator,tolerance,steps,events,wall time [s],"
                 "slip error [m],period error [s]\n")
         for r in rows:
@@ -115,12 +119,9 @@ def main():
             (f"{r['dense_steps']}, {r['dense_wall']:.3g} |"
              if "dense_wall" in r else "- |"))
     table = "\n".join(lines)
-    readme = os.path.join(HERE, "README.md")
-    text = open(readme).read()
-    begin, end = "<!-- table begin -->", "<!-- table end -->"
-    text = (text[:text.index(begin) + len(begin)] + "\n" + table + "\n" +
-            text[text.index(end):])
-    open(readme, "w").write(text)
+    with open(os.path.join(HERE, "runs.md"), "w") as f:
+        f.write("<!-- SPDX-License-Identifier: LGPL-2.1-or-later -->\n" +
+                table + "\n")
     print(table)
 
     import matplotlib
@@ -148,7 +149,8 @@ def main():
     fig.suptitle("Spring-slider work-precision (prm/spring-slider.prm, "
                  "1000 s, 4 events)")
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "work-precision.png"), dpi=120)
+    os.makedirs(os.path.join(HERE, "figures"), exist_ok=True)
+    fig.savefig(os.path.join(HERE, "figures", "work-precision.png"), dpi=120)
 
 
 if __name__ == "__main__":

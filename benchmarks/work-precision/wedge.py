@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Work against precision for the 2D wedge (the paper's figure 7, extended).
 Plots: wedge-fig7.png (or $WEDGE_PLOT), wedge-mesh.png.
 
@@ -161,6 +162,12 @@ def main(dirs):
 
 
 if __name__ == "__main__":
+    if sys.argv[1:2] in (["-h"], ["--help"]):
+        print(__doc__)
+        sys.exit(0)
+    if not sys.argv[1:] or sys.argv[1:] == ["--mesh"]:
+        sys.exit("wedge.py: give the run folders: "
+                 "wedge.py [--mesh] RUNDIR [RUNDIR ...]")
     if sys.argv[1:2] == ["--mesh"]:
         mesh_series(sys.argv[2:])
     else:

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The Green's-function operator's response to a uniform strike-slip patch
 (okada_operator_response's CSV) against Okada's (1992) half-space solution
 (dc3d_points), README.md here.

@@ -1,3 +1,4 @@
+! SPDX-License-Identifier: LGPL-2.1-or-later
 ! Okada's (1992) displacement and displacement gradient of a rectangular
 ! dislocation in an elastic half-space (z <= 0) at many points, through his
 ! subroutine DC3D (DC3D.f, not in this repository: run.sh compiles it from

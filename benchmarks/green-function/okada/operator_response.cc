@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
 // The Green's-function operator's response to a uniform slip patch, for the
 // comparison with Okada's (1992) half-space solution (README.md here).
 //

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # The Green's-function operator of prm/seas-bp5-qd.prm against Okada's (1992)
 # half-space solution for a uniform strike-slip patch (README.md here).
 #

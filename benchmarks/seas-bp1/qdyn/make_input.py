@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Write QDYN's input file (qdyn.in) for SCEC SEAS benchmark BP1-QD (or
 BP2-QD, which is BP1 with D_c = 4 mm) and the list of output elements
 (iot_depths.txt).

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Event table and thinned time series of a QDYN run of SEAS BP1-QD (or
 BP2-QD) set up by make_input.py.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Write an SCycle input (.in file + PETSc binary initial-condition/grid files)
 for SCEC SEAS BP1-FD, following SCycle's own SEAS_benchmarks/BP1 (BP1.in and
 createICs.m), switched to momentumBalanceType = quasidynamic_and_dynamic.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # The peer run of SEAS BP1-FD with SCycle (README.md in this folder).
 #
 # Usage:

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Event statistics from an SCycle BP1(-FD) run (run with /usr/bin/python3: numpy, h5py).
 
 usage: stats.py RUNDIR [--vthr V] [--csv SERIES.csv] [--seas DIR]

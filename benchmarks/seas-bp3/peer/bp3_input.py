@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Write HBI's input for SEAS BP3-QD (60 deg thrust or normal, half-space, normal-stress coupling).
 
 usage: bp3_input.py NATIVE_DIR --cell METRES --eps E --dtmax S --tmax YR [--dip DEG] [--sense thrust|normal]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Convert native HBI output for BP3-QD (see bp3_input.py, ../../seas-bp5/peer/hbi-bp5.patch) to SEAS-like files.
 
 usage: hbi2seas_bp3.py NATIVE_DIR OUT_DIR --commit SHA

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Surface displacement at x = +-8 km for the HBI BP3-QD run (not computed by HBI itself).
 
 usage: hbi_surface_bp3.py NATIVE_DIR OUT_DIR [--dip 60]

@@ -1,11 +1,12 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Independent peer run of SEAS BP3-QD (a dipping thrust or normal fault, half-space, slip-induced
 # normal-stress changes) with HBI (github.com/sozawa94/hbi).
 #
-# usage: PEER_SRC=/work/peers/hbi-bp3 benchmarks/seas-bp3/peer/run.sh OUTDIR
-#   PEER_SRC   HBI checkout to use/create (default /work/peers/hbi-bp3). If absent it is cloned
-#              from HBI_GIT (default: the local mirror, else GitHub), checked out at the pinned
-#              commit (../../hbi-peer.sh) and patched with ../../seas-bp5/peer/hbi-bp5.patch.
+# usage: PEER_SRC=HBI_SRC benchmarks/seas-bp3/peer/run.sh OUTDIR
+#   PEER_SRC   HBI checkout to use/create (required). If absent it is cloned (from HBI_GIT, else
+#              GitHub: ../../hbi-peer.sh), checked out at the pinned commit and patched with
+#              ../../seas-bp5/peer/hbi-bp5.patch.
 #   CELL       element size in m (default 25; must divide 2500)
 #   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
 #   STIFFEN    the kernels F times stiffer, the damping unchanged (default 1: the benchmark;
@@ -15,7 +16,7 @@
 #   NICE       nice level (default 10)
 #   DIP        the fault's dip in degrees (default 60; BP3 also runs 30 and 90)
 #   SIGMACONST 1: HBI's sigmaconst (the slip does not change the normal stress; a diagnostic, not
-#              BP3; rsfcycle's counterpart is ../freeze-normal.patch)
+#              BP3; rsfcycle's counterpart: git show a644040:benchmarks/seas-bp3/freeze-normal.patch)
 #   SENSE      thrust (default) or normal: BP3's normal-faulting variant, V_p = V_init = -1e-9 m/s and
 #              prestress -tau0; outputs stay thrust-positive (slip, shear stress negative)
 # Writes OUTDIR/{fltst_dpXXX.dat,global.dat,events.txt,srfst_x[+-]8.dat,timing.txt} and keeps HBI's native
@@ -26,7 +27,7 @@ HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 # the BP5 peer patch (no physics: an out-of-bounds fix, 64 stations, full-precision output)
 PATCH=$HERE/../../seas-bp5/peer/hbi-bp5.patch
 PY=/usr/bin/python3
-PEER_SRC=${PEER_SRC:-/work/peers/hbi-bp3}
+[ -n "${PEER_SRC:-}" ] || { echo "usage: PEER_SRC=HBI_SRC $0 OUTDIR (PEER_SRC: HBI's checkout, cloned there if absent)" >&2; exit 2; }
 CELL=${CELL:-25}
 EPS=${EPS:-1e-6}
 DTMAX=${DTMAX:-3153600}

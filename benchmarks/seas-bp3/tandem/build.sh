@@ -1,8 +1,9 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Builds tandem (github.com/TEAR-ERC/tandem, a discontinuous-Galerkin SEAS
 # code) outside the repository, as a third code for BP3-QD next to HBI.
 #
-#   benchmarks/seas-bp3/tandem/build.sh [PREFIX]     (default /work/peers)
+#   benchmarks/seas-bp3/tandem/build.sh PREFIX     (or TANDEM_PREFIX=PREFIX in the environment)
 #
 # tandem needs PETSc with 64-bit indices, as its CI builds it (3.22,
 # --with-64-bit-indices): against Debian's PETSc 3.18 (32-bit indices) it
@@ -13,11 +14,12 @@
 # into PREFIX/tandem-deps. tandem is configured for 2D, polynomial degree
 # 4, ARCH=hsw (noarch without AVX2). petsc-3.18.patch is applied as well:
 # it is inert with PETSc 3.22, and it keeps the tree the one that ran.
-# Every source is pinned below; they come from the local mirror
-# (/work/.mirror) if present, else from GitHub. Writes
+# Every source is pinned below; they come from GitHub, or from MIRROR if
+# set (a folder of bare mirrors MIRROR/OWNER+NAME/repo). Writes
 # PREFIX/tandem/build-petsc322/app/tandem. About 25 minutes on 2 cores.
 set -euo pipefail
-PREFIX=${1:-/work/peers}
+PREFIX=${1:-${TANDEM_PREFIX:-}}
+[ -n "$PREFIX" ] || { echo "usage: $0 PREFIX (where tandem, its PETSc and ParMETIS are built; or TANDEM_PREFIX)" >&2; exit 2; }
 TANDEM_COMMIT=b75f66692d299673bf85632ed71e2a7da71ff2e0  # 2026-06-29
 MNEME_COMMIT=fa175cffe4a22edc9efce5a7618610538936983b   # tandem's submodule pin
 YATETO_COMMIT=6920a2b602539baa503a959ab396f4918b2b439c  # tandem's submodule pin
@@ -31,7 +33,7 @@ DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
   python3-numpy cmake g++ make > /dev/null
 
 source_of() {  # owner/name -> a git URL
-  if [ -d "/work/.mirror/${1/\//+}/repo" ]; then echo "/work/.mirror/${1/\//+}/repo"
+  if [ -n "${MIRROR:-}" ] && [ -d "$MIRROR/${1/\//+}/repo" ]; then echo "$MIRROR/${1/\//+}/repo"
   else echo "https://github.com/$1.git"; fi
 }
 # a pinned tree without the large test graphs (the mirror has no blobs for them)

@@ -1,8 +1,9 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Third code for SEAS BP3-QD: tandem (github.com/TEAR-ERC/tandem;
 # discontinuous Galerkin, finite box, discrete Green's functions).
 #
-# usage: benchmarks/seas-bp3/tandem/run.sh OUTDIR
+# usage: TANDEM_PREFIX=PREFIX benchmarks/seas-bp3/tandem/run.sh OUTDIR
 #   LF     fault element size in km (default 0.1: degree-4 elements, so 5
 #          nodes per 100 m of fault; tandem's own default is 0.02)
 #   DIP    30, 60 (default) or 90
@@ -11,7 +12,7 @@
 #          (default 1e-7, as that file; it is absolute on slip and state)
 #   TMAX   end time in years of 365 days (default 1500)
 #   NICE   nice level (default 10)
-#   PEERS  where build.sh put tandem (default /work/peers)
+#   TANDEM_PREFIX  where build.sh puts tandem (required; built there if absent)
 #   RESUME 1: continue OUTDIR's run from its last time-loop checkpoint
 #          (OUTDIR/checkpoint, written every 10 CPU minutes; the Green's
 #          functions are read from OUTDIR/gf). The same LF, DIP and SENSE
@@ -32,8 +33,9 @@ SENSE=${SENSE:-thrust}
 RTOL=${RTOL:-1e-7}
 TMAX=${TMAX:-1500}
 NICE=${NICE:-10}
-PEERS=${PEERS:-/work/peers}
-OUT=${1:?usage: $0 OUTDIR}
+[ -n "${TANDEM_PREFIX:-}" ] || { echo "usage: TANDEM_PREFIX=PREFIX $0 OUTDIR (PREFIX: where build.sh puts tandem)" >&2; exit 2; }
+PEERS=$TANDEM_PREFIX
+OUT=${1:?usage: TANDEM_PREFIX=PREFIX $0 OUTDIR}
 BIN=$PEERS/tandem/build-petsc322/app/tandem
 [ -x "$BIN" ] || "$HERE/build.sh" "$PEERS"
 SRC=$PEERS/tandem/src/examples/tandem/2d

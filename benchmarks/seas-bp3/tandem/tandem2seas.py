@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Converts tandem's BP3-QD output (run.sh) to the files compare.py reads.
 
     tandem2seas.py RUN

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Writes tandem's BP3-QD parameter file (TOML) for one dip and sense.
 
     tandem_input.py OUTDIR --dip 60 --sense thrust --mesh bp3.msh [--rtol-output R]

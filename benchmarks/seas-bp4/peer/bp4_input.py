@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Write the HBI input for SEAS BP4-QD (problem 3dp: planar fault of rectangles in a whole space).
 
 usage: bp4_input.py OUTDIR --cell KM --eps E --dtmax S --tend S

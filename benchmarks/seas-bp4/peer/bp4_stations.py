@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Per-event slip and peak slip rate at the SEAS on-fault stations of a BP4 (or BP5) output directory.
 
 usage: bp4_stations.py DIR [--vth 1e-3] [--merge 86400] [--window 86400] [--yr 365.25]

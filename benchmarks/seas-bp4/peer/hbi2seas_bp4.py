@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Convert native HBI output (problem 3dp, patched with ../../seas-bp5/peer/hbi-bp5.patch) to SEAS BP4-QD files.
 
 usage: hbi2seas_bp4.py NATIVE_DIR OUT_DIR --commit SHA

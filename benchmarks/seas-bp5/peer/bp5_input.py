@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Write the HBI input for SEAS BP5-QD (problem 3dph: rectangular elements, Okada half-space).
 
 usage: bp5_input.py OUTDIR --cell KM --eps E --dtmax S --tmax YR [--stiffen F]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Convert native HBI output (patched with hbi-bp5.patch) to SEAS BP5-QD files.
 
 usage: hbi2seas.py NATIVE_DIR OUT_DIR --commit SHA [--surface row|extrap]

@@ -1,10 +1,11 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Independent peer run of SEAS BP5-QD with HBI (github.com/sozawa94/hbi).
 #
-# usage: PEER_SRC=/work/peers/hbi-bp5 benchmarks/seas-bp5/peer/run.sh OUTDIR
-#   PEER_SRC   HBI checkout to use/create (default /work/peers/hbi-bp5). If it is absent, it is
-#              cloned from HBI_GIT (default: the local mirror, else GitHub), checked out
-#              at the pinned commit and patched with hbi-bp5.patch.
+# usage: PEER_SRC=HBI_SRC benchmarks/seas-bp5/peer/run.sh OUTDIR
+#   PEER_SRC   HBI checkout to use/create (required). If it is absent, it is cloned from
+#              HBI_GIT (default: GitHub), checked out at the pinned commit and patched with
+#              hbi-bp5.patch.
 #   CELL       element size in km (default 1, the official BP5 size; must divide 100 and 40)
 #   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
 #   DTMAX      max time step in s (default 3153600 = 0.1 yr of 365 d; sets the interseismic sampling)
@@ -21,7 +22,7 @@ set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 PATCH=$HERE/hbi-bp5.patch
 PY=/usr/bin/python3
-PEER_SRC=${PEER_SRC:-/work/peers/hbi-bp5}
+[ -n "${PEER_SRC:-}" ] || { echo "$(basename "$0"): set PEER_SRC to the folder of HBI's checkout (cloned and patched there if absent)" >&2; exit 2; }
 CELL=${CELL:-1}
 EPS=${EPS:-1e-6}
 DTMAX=${DTMAX:-3153600}
@@ -53,7 +54,7 @@ nice -n "$NICE" $PY "$HERE/hbi2seas.py" "$N" "$OUT" --commit "$HBI_COMMIT"
   [ -n "${PARAM_FILE:-}" ] && echo "parameter file: $PARAM_FILE"
   echo "case=BP5-QD stiffen=$STIFFEN cell=${CELL}km eps_r=$EPS dtmax=${DTMAX}s tmax=${TMAX}yr(365d) OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
-  echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: the other core was busy with another engineer's compiles/runs)"
+  echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"
 } > "$OUT/timing.txt"
 cat "$OUT/timing.txt"

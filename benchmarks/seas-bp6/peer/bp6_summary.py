@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Summary table and physics sanity checks for SEAS BP6-QD output in SEAS format.
 
 usage: bp6_summary.py DIR [DIR ...]     (each DIR holds fltst_strk*.dat, global.dat,

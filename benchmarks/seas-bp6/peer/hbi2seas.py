@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Convert native HBI output (patched for BP6, see hbi-bp6-closedform.patch) to
 SEAS BP6-QD files: fltst_strk*.dat, global.dat, slip.dat (+ shear_stress.dat, slip_rate.dat).
 

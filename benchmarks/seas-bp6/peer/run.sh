@@ -1,10 +1,11 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Independent peer run of SEAS BP6-QD-A / BP6-QD-S with HBI (github.com/sozawa94/hbi).
 #
-# usage: PEER_SRC=/work/peers/hbi benchmarks/seas-bp6/peer/run.sh OUTDIR [A|S|AS]
-#   PEER_SRC   HBI checkout to use/create (default /work/peers/hbi). If absent it is
-#              cloned from HBI_GIT (default: the local mirror, else GitHub), checked out
-#              at the pinned commit and patched with hbi-bp6-closedform.patch.
+# usage: PEER_SRC=HBI_SRC benchmarks/seas-bp6/peer/run.sh OUTDIR [A|S|AS]
+#   PEER_SRC   HBI checkout to use/create (required; not the BP4/BP5/BP7 ones). If absent it
+#              is cloned from HBI_GIT (default: GitHub), checked out at the pinned commit and
+#              patched with hbi-bp6-closedform.patch.
 #   CELL       element size in m (default 10; must divide 500)
 #   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
 #   DTMAX      max time step in s (default 3600; sets the station sampling)
@@ -16,7 +17,7 @@ set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 PATCH=$HERE/hbi-bp6-closedform.patch
 PY=/usr/bin/python3
-PEER_SRC=${PEER_SRC:-/work/peers/hbi}
+[ -n "${PEER_SRC:-}" ] || { echo "$(basename "$0"): set PEER_SRC to the folder of HBI's checkout (cloned and patched there if absent)" >&2; exit 2; }
 CELL=${CELL:-10}
 EPS=${EPS:-1e-6}
 DTMAX=${DTMAX:-3600}
@@ -67,7 +68,7 @@ for LAW in $(echo "$LAWS" | grep -o .); do
     echo "code=HBI $HBI_COMMIT + $(basename "$PATCH")"
     echo "case=BP6-QD-$LAW cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
     echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
-    echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared; the other core was busy with another user's C++ builds)"
+    echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg)"
     grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"
   } > "$D/timing.txt"
   cat "$D/timing.txt"

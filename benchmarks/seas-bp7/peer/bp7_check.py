@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Check HBI's BP7 nucleation (hbi-bp7.patch) in a native run directory written by run.sh.
 
 usage: bp7_check.py NATIVE_DIR [--times 0.1,0.2,...]

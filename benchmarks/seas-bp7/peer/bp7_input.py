@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Write the HBI input for SEAS BP7-QD (problem 3dp: planar fault of square cells in a whole space).
 
 usage: bp7_input.py OUTDIR --cell M --eps E --dtmax S --tend S [--no-nucleation]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Event catalogue for a SEAS-format BP7-QD output directory (works on any code's global.dat).
 
 usage: bp7_summary.py DIR [DIR ...] [--vth 1e-3] [--merge SECONDS] [--yr 365.25]

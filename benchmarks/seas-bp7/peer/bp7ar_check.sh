@@ -1,24 +1,24 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Is hbi-bp7.patch inert without its keyword? Runs HBI's own example examples/bp7ar.in (BP7 without the
 # prescribed nucleation) with the BP5 build (hbi-bp5.patch only) and with the BP7 build (+ hbi-bp7.patch),
 # and compares every native output file byte for byte.
 #
-# usage: benchmarks/seas-bp7/peer/bp7ar_check.sh OUTDIR
-#   BP5_SRC  HBI checkout with hbi-bp5.patch, built (default /work/peers/hbi-bp5; only read)
-#   BP7_SRC  HBI checkout with hbi-bp5.patch + hbi-bp7.patch, built by run.sh (default /work/peers/hbi-bp7)
+# usage: BP5_SRC=DIR BP7_SRC=DIR benchmarks/seas-bp7/peer/bp7ar_check.sh OUTDIR
+#   BP5_SRC  HBI checkout with hbi-bp5.patch, built by ../../seas-bp5/peer/run.sh (required; only read)
+#   BP7_SRC  HBI checkout with hbi-bp5.patch + hbi-bp7.patch, built by run.sh (required; only read)
 #   TMAX     optional: replace bp7ar.in's tmax (HBI yr of 365 d; the example has 10.0)
 #   NICE     nice level (default 10)
-#   COMPARE_ONLY=1  only compare the outputs already in OUTDIR
+#   COMPARE_ONLY=1  only compare the outputs already in OUTDIR (BP5_SRC, BP7_SRC not needed)
 # The shipped examples/bp7ar_param.dat has 10 columns and no header line, while bp7ar.in asks for 2
 # columns (a, tau) with a header, as examples/bp7ar_param.py writes them; at the pinned commit the example
 # stops with "End of file". We write the 2-column file from the shipped columns 2 (a) and 6 (tau), which
 # are the values bp7ar_param.py computes (checked: a = 0.004 exactly where r < 0.2 km at the cell centres).
 set -euo pipefail
-BP5_SRC=${BP5_SRC:-/work/peers/hbi-bp5}
-BP7_SRC=${BP7_SRC:-/work/peers/hbi-bp7}
 NICE=${NICE:-10}
-OUT=${1:?usage: $0 OUTDIR}
+OUT=${1:?usage: BP5_SRC=DIR BP7_SRC=DIR $0 OUTDIR}
 if [ "${COMPARE_ONLY:-0}" != 1 ]; then
+[ -n "${BP5_SRC:-}" ] && [ -n "${BP7_SRC:-}" ] || { echo "$(basename "$0"): set BP5_SRC and BP7_SRC to the built HBI checkouts of the BP5 and BP7 peer runs" >&2; exit 2; }
 for b in bp5bin bp7bin; do
   d=$OUT/$b; rm -rf "$d"; mkdir -p "$d/examples" "$d/output"
   sed 's#examples/bp7ar_param.dat#examples/bp7ar_param2.dat#' "$BP5_SRC/examples/bp7ar.in" > "$d/examples/bp7ar.in"

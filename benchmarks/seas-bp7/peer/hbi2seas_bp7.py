@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Convert native HBI output (problem 3dp, hbi-bp5.patch + hbi-bp7.patch) to SEAS BP7-QD files.
 
 usage: hbi2seas_bp7.py NATIVE_DIR OUT_DIR --commit SHA

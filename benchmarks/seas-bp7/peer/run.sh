@@ -1,11 +1,12 @@
 #!/bin/bash
+# SPDX-License-Identifier: LGPL-2.1-or-later
 # Independent peer run of SEAS BP7-QD (aging law) with HBI (github.com/sozawa94/hbi), problem 3dp (whole space).
 # HBI is patched with ../../seas-bp5/peer/hbi-bp5.patch and then hbi-bp7.patch (the prescribed nucleation).
 #
-# usage: benchmarks/seas-bp7/peer/run.sh OUTDIR
-#   PEER_SRC   HBI checkout to use/create (default /work/peers/hbi-bp7; NOT the BP4/BP5 one). If it is
-#              absent, it is cloned from HBI_GIT (default: the local mirror, else GitHub), checked out
-#              at the pinned commit and patched with hbi-bp5.patch, then hbi-bp7.patch.
+# usage: PEER_SRC=HBI_SRC benchmarks/seas-bp7/peer/run.sh OUTDIR
+#   PEER_SRC   HBI checkout to use/create (required; NOT the BP4/BP5 one). If it is absent, it is
+#              cloned from HBI_GIT (default: GitHub), checked out at the pinned commit and
+#              patched with hbi-bp5.patch, then hbi-bp7.patch.
 #   CELL       element size in m (default 10; must divide 800 into an even count)
 #   EPS        HBI eps_r, relative RK45 tolerance (default 1e-6)
 #   DTMAX      max time step in s (default 1e6)
@@ -19,14 +20,14 @@ set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 PATCHES=("$HERE/../../seas-bp5/peer/hbi-bp5.patch" "$HERE/hbi-bp7.patch")
 PY=/usr/bin/python3
-PEER_SRC=${PEER_SRC:-/work/peers/hbi-bp7}
+[ -n "${PEER_SRC:-}" ] || { echo "$(basename "$0"): set PEER_SRC to the folder of HBI's checkout (cloned and patched there if absent)" >&2; exit 2; }
 CELL=${CELL:-10}
 EPS=${EPS:-1e-6}
 DTMAX=${DTMAX:-1e6}
 TEND=${TEND:-3.15576e8}
 NUC=${NUC:-1}
 NICE=${NICE:-10}
-OUT=${1:?usage: $0 OUTDIR}
+OUT=${1:?usage: PEER_SRC=DIR $0 OUTDIR}
 
 # ---------------------------------------------------------------- source + build (outside the repo)
 source "$HERE/../../hbi-peer.sh"
@@ -48,7 +49,7 @@ nice -n "$NICE" $PY "$HERE/hbi2seas_bp7.py" "$N" "$OUT" --commit "$HBI_COMMIT"
   echo "code=HBI $HBI_COMMIT + hbi-bp5.patch + hbi-bp7.patch"
   echo "case=BP7-QD-A problem=3dp cell=${CELL}m eps_r=$EPS dtmax=${DTMAX}s t_end=${TEND}s nucleation=$NUC OMP_NUM_THREADS=1 MPI ranks=1 nice=$NICE"
   echo "steps=$(tail -1 "$N/output/monitor0.dat" | awk '{print $1}')"
-  echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg) (machine shared: another engineer's MPI job ran on the 2 cores)"
+  echo "host=$(hostname) nproc=$(nproc) loadavg_at_end=$(cut -d' ' -f1-3 /proc/loadavg)"
   grep -E "Elapsed|User time|System time|Maximum resident" "$N/time.txt"
 } > "$OUT/timing.txt"
 cat "$OUT/timing.txt"

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Headless check of an rsfcycle run folder's PVD record with ParaView.
 
 Usage: xvfb-run -a pvbatch scripts/check_pvd.py RUNDIR/solution.pvd

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Cost of the seismic cycles of an rsfcycle run folder.
 
 Usage: /usr/bin/python3 scripts/cycle_stats.py RUNDIR [--cycles N]

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """The figures README.md quotes of the demo run, from its run folder.
 
 Usage: /usr/bin/python3 scripts/demo_figures.py [RUNDIR] [--plot]

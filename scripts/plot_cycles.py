@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Seismic-cycle figures of any rsfcycle run folder (built for long runs of
 Scene = mesh-file, e.g. prm/subduction-2d.prm; doc/subduction-2d.md).
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """PNG versions of the paper's figures 3-7 from rsfcycle run folders.
 
 Pipping, Kornhuber, Rosenau and Oncken, "On the efficient and reliable

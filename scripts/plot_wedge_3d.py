@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """PNG versions of the paper's figures 9 and 10 (the 3D wedge, section 4) from
 an rsfcycle run folder of a 3D wedge (prm/wedge-3d.prm).
 

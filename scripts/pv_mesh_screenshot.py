@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: LGPL-2.1-or-later
 """Headless ParaView picture of a 2D run's mesh, coloured by a field.
 
 Usage (ParaView's Python, no display needed):

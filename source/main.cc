@@ -182,6 +182,23 @@ namespace
         "(or set Overwrite output = true) to overwrite it");
     std::error_code error;
     fs::create_directories(dir, error);
+    // an earlier run's SEAS files (their names depend on the benchmark and
+    // its stations, so the new run might not write over each of them): an
+    // upload must not carry stray files; removed only in a folder whose
+    // parameters.prm says rsfcycle wrote it
+    std::string first_line;
+    std::getline(std::ifstream(dir + "/parameters.prm"), first_line);
+    if (overwrite && first_line.rfind("# rsfcycle ", 0) == 0)
+      for (const auto &entry : fs::directory_iterator(dir, error))
+        {
+          const std::string name = entry.path().filename().string();
+          const bool        seas = name.rfind("fltst_", 0) == 0 ||
+                            name.rfind("srfst_", 0) == 0 ||
+                            name.rfind("blkst_", 0) == 0 ||
+                            (entry.path().extension() == ".dat");
+          if (seas && entry.is_regular_file())
+            fs::remove(entry.path(), error);
+        }
     const std::string probe = dir + "/.rsfcycle-write-test";
     if (error || !std::ofstream(probe))
       throw std::invalid_argument("Output directory = " + dir +

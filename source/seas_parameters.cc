@@ -12,21 +12,91 @@ namespace rsfcycle
   using dealii::ParameterHandler;
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /** The names of SeasParameters::Benchmark, in its order. */
+    const char *const benchmark_names =
+      "none|custom|BP1-QD|BP1-FD|BP2-QD|BP3-QD|BP3-FD|BP4-QD|BP5-QD|"
+      "BP6-QD-A|BP6-QD-S|BP7-QD";
+
+    SeasParameters::Benchmark
+    parse_benchmark(const std::string &name)
+    {
+      const auto names =
+        dealii::Utilities::split_string_list(benchmark_names, '|');
+      for (unsigned int i = 0; i < names.size(); ++i)
+        if (names[i] == name)
+          return static_cast<SeasParameters::Benchmark>(i);
+      throw std::invalid_argument("Output/SEAS/Benchmark: '" + name +
+                                  "' is not one of " + benchmark_names);
+    }
+  } // namespace
+
 
   void
   SeasParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("SEAS");
     prm.declare_entry(
+      "Benchmark",
+      "none",
+      Patterns::Selection(benchmark_names),
+      "The SEAS benchmark whose files the run writes, with the names, "
+      "headers, field lines and extra files its description asks for "
+      "(doc/seas.md lists them per benchmark): none (no SEAS files), "
+      "custom (the files of Problem, for a model of your own), or one of "
+      "BP1-QD, BP1-FD, BP2-QD, BP3-QD, BP3-FD, BP4-QD, BP5-QD, BP6-QD-A, "
+      "BP6-QD-S, BP7-QD. The stations and profiles are placed by the "
+      "entries below; python3 -m rsfcycle.seas check RUN checks a run "
+      "folder against the benchmark's description");
+    prm.declare_entry(
       "Problem",
       "",
       Patterns::Anything(),
-      "The SEAS benchmark's name, written as `# problem=` into the header "
-      "of the SEAS files (e.g. SEAS Benchmark BP1-QD); empty: no SEAS "
-      "files. 2D: fltst_dpXXX, srfst_NAME, global.dat, slip.dat; 3D (a "
-      "fault in a plane y = const of the mesh, x along strike, z up): "
-      "fltst_strkXXdpYY, blkst_NAME, global.dat, rupture.dat and the "
-      "strike and depth profiles (doc/output.md, doc/seas.md)");
+      "With Benchmark = custom (or none): the problem's name, written as "
+      "`# problem=` into the headers of the SEAS files; given with "
+      "Benchmark = none it switches the custom files on. 2D: fltst_dpXXX, "
+      "srfst_NAME, global.dat, slip.dat; 3D (a fault in a plane y = const "
+      "of the mesh, x along strike, z up): fltst_strkXXdpYY, blkst_NAME, "
+      "global.dat, rupture.dat and the strike and depth profiles "
+      "(doc/output.md)");
+    prm.declare_entry(
+      "Modeler",
+      "",
+      Patterns::Anything(),
+      "The modeler's name in the headers (`# modeler=`, in BP1 and BP2 "
+      "`# author=`), as the benchmark's web server shows it; empty: "
+      "'unknown', which python3 -m rsfcycle.seas check refuses");
+    prm.declare_entry(
+      "Description",
+      "",
+      Patterns::Anything(),
+      "Anything else for the headers, as one line `# description=...` "
+      "(e.g. BP3's 'thrust, dip 60', which the description asks uploads "
+      "to state); empty: no such line");
+    prm.declare_entry(
+      "Moment rate region",
+      "1",
+      Patterns::Anything(),
+      "3D: where global.dat's max_slip_rate and moment_rate are taken: a "
+      "function of x2 (along strike) and x3 (depth, positive down) [m], "
+      "> 0 inside (muparser syntax, e.g. BP5's abs(x2) <= 34e3 && x3 <= "
+      "20e3); 1: the whole contact");
+    prm.declare_entry(
+      "VW moment rate region",
+      "",
+      Patterns::Anything(),
+      "3D: a second region, as Moment rate region, whose moment rate "
+      "global.dat writes as a fourth column moment_rate_vw (BP7: the "
+      "velocity-weakening disc, x2^2 + x3^2 <= 200^2); empty: no such "
+      "column");
+    prm.declare_entry(
+      "Rupture region",
+      "1",
+      Patterns::Anything(),
+      "3D: the nodes rupture.dat lists, as Moment rate region (BP5: "
+      "abs(x2) <= 34e3 && x3 <= 20e3); each with the time its slip rate "
+      "first reaches Rupture threshold in the first event, 1e9 if never");
     prm.declare_entry(
       "Fault stations",
       "0, 2.5e3, 5e3, 7.5e3, 10e3, 12.5e3, 15e3, 17.5e3, 20e3, 25e3, "
@@ -88,9 +158,9 @@ namespace rsfcycle
       "3D: the on-fault stations as 'x2, x3; x2, x3' [m], x2 the mesh's x "
       "(along strike), x3 the depth -z (positive down); each writes "
       "fltst_strk+XXdp+YY (x2 and x3 in units of Plane station names, "
-      "signed), bilinear between the four contact nodes around it (a "
-      "structured grid of the contact there). The default: SEAS BP5's ten "
-      "stations");
+      "signed), or the name after '=' ('x2, x3 = fltst_NAME'), bilinear "
+      "between the four contact nodes around it (a structured grid of the "
+      "contact there). The default: SEAS BP5's ten stations");
     prm.declare_entry(
       "Plane station names",
       "km",
@@ -125,6 +195,19 @@ namespace rsfcycle
       "(interpolated in log10 V between steps; a node counts again once "
       "the fastest node of the fault is below it)");
     prm.declare_entry(
+      "Boundary slip rate",
+      "0",
+      Patterns::Double(),
+      "The slip rate of the load or creep boundary where the contact ends "
+      "(the SEAS benchmarks' plate rate V_p, 1e-9) [m/s], as the files "
+      "report it (2D: after Thrust slip; 3D: along strike, slip_2): a "
+      "profile position up to one cell beyond the contact's last node "
+      "is that boundary's node, whose slip the files give as this rate "
+      "times t and whose stresses as those of the contact node next to it "
+      "(the descriptions' profiles end there: BP1, BP3 at 40 km, BP5 at 40 "
+      "km depth, BP7 at +-400 m). 0: every profile position within the "
+      "contact nodes");
+    prm.declare_entry(
       "Thrust slip",
       "as computed",
       Patterns::Selection("as computed|reversed"),
@@ -150,7 +233,15 @@ namespace rsfcycle
   SeasParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("SEAS");
-    problem = prm.get("Problem");
+    problem   = prm.get("Problem");
+    benchmark = parse_benchmark(prm.get("Benchmark"));
+    if (benchmark == Benchmark::none && !problem.empty())
+      benchmark = Benchmark::custom;
+    modeler          = prm.get("Modeler");
+    description      = prm.get("Description");
+    moment_region    = prm.get("Moment rate region");
+    vw_moment_region = prm.get("VW moment rate region");
+    rupture_region   = prm.get("Rupture region");
     fault_stations.clear();
     for (const auto &item :
          dealii::Utilities::split_string_list(prm.get("Fault stations")))
@@ -167,10 +258,14 @@ namespace rsfcycle
     mirror                 = prm.get_bool("Mirror model");
     slip_sign              = prm.get("Thrust slip") == "reversed" ? -1. : 1.;
     plane_stations.clear();
-    for (const auto &item :
+    plane_station_names.clear();
+    for (const auto &entry :
          dealii::Utilities::split_string_list(prm.get("Plane stations"), ';'))
       {
-        const auto values = dealii::Utilities::split_string_list(item, ',');
+        // 'x2, x3' or 'x2, x3 = NAME'
+        const auto  named  = dealii::Utilities::split_string_list(entry, '=');
+        const auto &item   = named.front();
+        const auto  values = dealii::Utilities::split_string_list(item, ',');
         std::array<double, 2> x{};
         bool                  ok = values.size() == 2;
         for (unsigned int i = 0; ok && i < 2; ++i)
@@ -180,10 +275,14 @@ namespace rsfcycle
             ok =
               end != values[i].c_str() && *end == '\0' && std::isfinite(x[i]);
           }
+        ok =
+          ok && named.size() <= 2 && (named.size() == 1 || !named[1].empty());
         if (!ok)
-          throw std::invalid_argument("Output/SEAS/Plane stations: '" + item +
-                                      "' is not 'x2, x3' (two numbers [m])");
+          throw std::invalid_argument("Output/SEAS/Plane stations: '" + entry +
+                                      "' is not 'x2, x3' (two numbers [m]) "
+                                      "or 'x2, x3 = NAME'");
         plane_stations.push_back(x);
+        plane_station_names.push_back(named.size() == 2 ? named[1] : "");
       }
     {
       const std::string names = prm.get("Plane station names");
@@ -197,9 +296,10 @@ namespace rsfcycle
         v[i] = std::stod(items[i]);
       return v;
     };
-    strike_profile    = read4("Strike profile");
-    depth_profile     = read4("Depth profile");
-    rupture_threshold = prm.get_double("Rupture threshold");
+    strike_profile     = read4("Strike profile");
+    depth_profile      = read4("Depth profile");
+    rupture_threshold  = prm.get_double("Rupture threshold");
+    boundary_slip_rate = prm.get_double("Boundary slip rate");
     prm.leave_subsection();
   }
 
@@ -213,7 +313,15 @@ namespace rsfcycle
     if (!(shear_modulus > 0))
       throw std::invalid_argument(
         entry + "Shear modulus = " + format_number(shear_modulus) +
-        ": must be > 0 when Problem is given (the moment rate's G)");
+        ": must be > 0 when SEAS files are written (the moment rate's G)");
+    if (benchmark == Benchmark::custom && problem.empty())
+      throw std::invalid_argument(
+        entry + "Problem: empty with Benchmark = custom; give the name "
+                "of the problem for the headers");
+    for (const std::string *text : {&modeler, &description, &problem})
+      if (text->find('\n') != std::string::npos)
+        throw std::invalid_argument(
+          entry + "Modeler, Description and Problem: one line each");
     if (dimension == 3)
       {
         validate_plane();
@@ -271,8 +379,8 @@ namespace rsfcycle
         entry + "Rupture threshold = " + format_number(rupture_threshold) +
         ": must be > 0");
     std::vector<std::string> names;
-    for (const auto &x : plane_stations)
-      names.push_back(plane_station_file(x));
+    for (unsigned int i = 0; i < plane_stations.size(); ++i)
+      names.push_back(plane_station_file(i));
     std::sort(names.begin(), names.end());
     if (std::adjacent_find(names.begin(), names.end()) != names.end())
       throw std::invalid_argument(
@@ -295,6 +403,90 @@ namespace rsfcycle
              << std::setw(station_digits) << std::labs(units);
       }
     return name.str();
+  }
+
+
+  std::string
+  SeasParameters::plane_station_file(const unsigned int i) const
+  {
+    if (i < plane_station_names.size() && !plane_station_names[i].empty())
+      return plane_station_names[i];
+    return plane_station_file(plane_stations[i]);
+  }
+
+
+  std::string
+  SeasParameters::benchmark_name() const
+  {
+    const auto names =
+      dealii::Utilities::split_string_list(benchmark_names, '|');
+    return names[static_cast<unsigned int>(benchmark)];
+  }
+
+
+  SeasConventions
+  SeasParameters::conventions() const
+  {
+    SeasConventions   c;
+    const std::string name = benchmark_name();
+    c.problem              = "SEAS Benchmark " + name;
+    switch (benchmark)
+      {
+        case Benchmark::none:
+        case Benchmark::custom:
+          c.problem = problem;
+          break;
+        case Benchmark::bp1_qd:
+        case Benchmark::bp1_fd:
+        case Benchmark::bp2_qd:
+          // D1 (the BP1-QD description) section 4 and 5: "SEAS Benchmark
+          // No.1", author and code_version, the slip evolution in devol.dat
+          // under the field lines z and t max_slip_rate slip, no global.dat
+          if (benchmark != Benchmark::bp1_fd)
+            c.problem = benchmark == Benchmark::bp1_qd ? "SEAS Benchmark No.1" :
+                                                         "SEAS Benchmark No.2";
+          c.bp1_keys          = true;
+          c.position_name     = "z";
+          c.slip_profile_file = "devol.dat";
+          c.global            = false;
+          c.off_fault         = false;
+          c.station_location  = "km depth";
+          break;
+        case Benchmark::bp3_qd:
+        case Benchmark::bp3_fd:
+          // D3 section 4: modeler in every header, the profiles' field lines
+          // x_d and t max_slip_rate slip, no global.dat
+          c.profile_author_key = "modeler";
+          c.position_name      = "x_d";
+          c.global             = false;
+          c.station_location   = "km down-dip distance";
+          break;
+        case Benchmark::bp4_qd:
+          // no description stored: HBI's BP4 writer and BP5's conventions
+          c.profile_name_lines = 4;
+          c.off_fault          = false;
+          break;
+        case Benchmark::bp5_qd:
+        case Benchmark::bp7_qd:
+          // D5, D7 section 4: catalog.dat, the profiles stress_2_*, 4 lines
+          c.profile_name_lines = 4;
+          c.catalog            = true;
+          if (benchmark == Benchmark::bp7_qd)
+            c.problem = "SEAS Benchmark BP7-QD-A";
+          break;
+        case Benchmark::bp6_qd_a:
+        case Benchmark::bp6_qd_s:
+          // D6 section 4: "SEAS Benchmark BP6-A", the profiles along z
+          c.problem            = benchmark == Benchmark::bp6_qd_a ?
+                                   "SEAS Benchmark BP6-A" :
+                                   "SEAS Benchmark BP6-S";
+          c.profile_name_lines = 4;
+          c.position_name      = "z";
+          c.off_fault          = false;
+          c.station_location   = "km along strike (z)";
+          break;
+      }
+    return c;
   }
 
 

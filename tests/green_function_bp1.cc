@@ -67,7 +67,7 @@ namespace
                                 "  set Write VTU = false\n"
                                 "  set Progress interval = 1e9\n"
                                 "  subsection SEAS\n"
-                                "    set Problem =\n"
+                                "    set Benchmark = none\n"
                                 "  end\n"
                                 "end\n" +
                                 settings);

@@ -91,7 +91,7 @@ namespace
                                             "end\n"
                                             "subsection Output\n"
                                             "  subsection SEAS\n"
-                                            "    set Problem =\n"
+                                            "    set Benchmark = none\n"
                                             "  end\n"
                                             "end\n" :
                                             "subsection Time stepping\n"

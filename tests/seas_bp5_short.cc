@@ -4,23 +4,28 @@
 // Green's-function method) through its first event, which the nucleation
 // patch's initial slip rate V_i = 0.03 m/s starts at once. Checks the 3D
 // SEAS files (output::SeasPlaneFiles; yes/no lines):
-//  - all 29 files are written: 10 fltst_strk+XXdp+YY, 9 blkst_*, global,
-//    rupture and the 8 strike and depth profiles (their first row the
-//    positions);
-//  - the first rows of the stations (the first step, t = 1 ms) equal the
-//    benchmark's initial condition in closed form (BP5: the steady state
-//    of V_p with tau_0 = sigma_n a asinh(V/(2 V_0) exp((f_0 + b ln(V_0 /
-//    V_p))/a)) + eta V): at (0, 10) km (a_0, V_p), at (-24, 10) km (a_0 on
-//    the nucleation patch, V_i = 0.03 m/s, L = 0.13 m), at (-36, 0) km
-//    (a_max, V_p): zero slip, log10 V, shear stress tau_0 - eta V and
-//    log10 theta = log10(L/V_p), to 1e-3 (in 1 ms the patch's state falls
-//    by V_i t / L = 2.3e-4 of itself, 1e-4 in log10);
-//  - rupture.dat starts at the first step with nodes of the nucleation
-//    patch (x2 in [-30, -18], x3 in [4, 16] km) only, among them its four
-//    inner nodes (on the patch's edges the quadrature of the prestress
-//    mixes the patch's and the neighbours' values, and those nodes start
-//    slower); the rupture then spreads: along strike at 8 km depth east of
-//    the patch the arrival times grow with the distance;
+//  - the 30 files of the BP5-QD description are written: 10
+//    fltst_strk+XXdp+YY, 9 blkst_*, global.dat, rupture.dat, catalog.dat
+//    and the 8 strike and depth profiles slip_2, slip_3, stress_2,
+//    stress_3 (their first row the positions: -38 ... 38 km along strike,
+//    0 ... 40 km down dip, the creeping node at 40 km included);
+//  - the first rows of the stations (t = 0) equal the benchmark's initial
+//    condition in closed form (BP5: the steady state of V_p with tau_0 =
+//    sigma_n a asinh(V/(2 V_0) exp((f_0 + b ln(V_0 / V_p))/a)) + eta V):
+//    at (0, 10) km (a_0, V_p), at (-24, 10) km (a_0 on the nucleation
+//    patch, V_i = 0.03 m/s, L = 0.13 m), at (-36, 0) km (a_max, V_p): zero
+//    slip, log10 V, shear stress tau_0 - eta V and log10 theta =
+//    log10(L/V_p), to 1e-3;
+//  - rupture.dat lists the nodes of the region |x2| <= 34, x3 <= 20 km
+//    (the description's); its earliest times (t = 0) are nodes of the
+//    nucleation patch (x2 in [-30, -18], x3 in [4, 16] km) only, among
+//    them its four inner nodes (on the patch's edges the quadrature of the
+//    prestress mixes the patch's and the neighbours' values, and those
+//    nodes start slower); the rupture then spreads: along strike at 8 km
+//    depth east of the patch the arrival times grow with the distance;
+//  - catalog.dat has the first event from t = 0 to its end, over a
+//    rupture area of at least the patch (144 km^2), with a positive mean
+//    slip and a mean shear stress that drops;
 //  - the rake stays free but near pure strike slip (|slip_3| < 5 % of
 //    slip_2 at the stations that slip more than 1 m; it turns at the
 //    rectangle's ends), the slip is right-lateral (slip_2 > 0) and the
@@ -73,6 +78,7 @@ main(int argc, char **argv)
   dealii::ParameterHandler prm;
   scenes::declare_parameters(prm);
   scenes::parse_parameter_file(prm, source + "/../prm/seas-bp5-qd.prm");
+  std::filesystem::remove_all("bp5-run"); // (the files of an earlier run)
   prm.parse_input_from_string("set Output directory = bp5-run\n"
                               "set Overwrite output = true\n"
                               "set Stop after events = 1\n"
@@ -81,9 +87,6 @@ main(int argc, char **argv)
                               "end\n"
                               "subsection Output\n"
                               "  set Progress interval = 1e9\n"
-                              "  subsection SEAS\n"
-                              "    set Depth profile = 0, 0, 36e3, 1e3\n"
-                              "  end\n"
                               "end\n");
   run_model<3>(prm);
   const std::string out = "bp5-run/";
@@ -112,21 +115,22 @@ main(int argc, char **argv)
                                  "strk-16fn+08dp+00"})
     files += std::filesystem::exists(out + "blkst_" + name);
   files += std::filesystem::exists(out + "global.dat") +
-           std::filesystem::exists(out + "rupture.dat");
+           std::filesystem::exists(out + "rupture.dat") +
+           std::filesystem::exists(out + "catalog.dat");
   bool positions = true;
   for (const std::string line : {"strike", "depth"})
-    for (const std::string field :
-         {"slip_2", "slip_3", "shear_stress_2", "shear_stress_3"})
+    for (const std::string field : {"slip_2", "slip_3", "stress_2", "stress_3"})
       {
         const auto rows = read_seas(out + field + "_" + line + ".dat");
         files += !rows.empty();
-        // row 1: 0 0, then 77 (x2 -38 ... 38 km) or 37 (0 ... 36 km) positions
+        // row 1: 0 0, then 77 (x2 -38 ... 38 km) or 41 (0 ... 40 km)
+        // positions
         positions = positions && !rows.empty() &&
-                    rows[0].size() == (line == "strike" ? 79u : 39u) &&
+                    rows[0].size() == (line == "strike" ? 79u : 43u) &&
                     rows.size() > 2 && rows[1].size() == rows[0].size();
       }
-  dealii::deallog << "29 SEAS files, profiles with their positions: "
-                  << yes(files == 29 && positions) << std::endl;
+  dealii::deallog << "30 SEAS files, profiles with their positions: "
+                  << yes(files == 30 && positions) << std::endl;
 
   // columns: t slip_2 slip_3 slip_rate_2 slip_rate_3 shear_stress_2
   // shear_stress_3 state
@@ -139,7 +143,7 @@ main(int argc, char **argv)
     {
       const auto first = read_seas(out + "fltst_" + name).front();
       initial_error    = std::max({initial_error,
-                                   std::abs(first[0] - 1e-3),
+                                   std::abs(first[0]),
                                    std::abs(first[1]),
                                    std::abs(first[2]),
                                    std::abs(first[3] - std::log10(V)),
@@ -152,8 +156,14 @@ main(int argc, char **argv)
                   << yes(initial_error < 1e-3) << std::endl;
 
   // rupture.dat: x2 x3 t
-  const auto   rupture    = read_seas(out + "rupture.dat");
-  const double first_t    = rupture.front()[2];
+  const auto rupture = read_seas(out + "rupture.dat");
+  double     first_t = 1e9;
+  bool       region  = !rupture.empty();
+  for (const auto &r : rupture)
+    {
+      first_t = std::min(first_t, r[2]);
+      region  = region && std::abs(r[0]) <= 34e3 && r[1] <= 20e3;
+    }
   unsigned int first_rows = 0, inner = 0;
   bool         in_patch = true;
   for (const auto &r : rupture)
@@ -166,7 +176,7 @@ main(int argc, char **argv)
       }
   std::vector<std::pair<double, double>> front; // x2, t at 8 km depth
   for (const auto &r : rupture)
-    if (std::abs(r[1] - 8e3) < 1 && r[0] > -18e3)
+    if (std::abs(r[1] - 8e3) < 1 && r[0] > -18e3 && r[2] < 1e9)
       front.emplace_back(r[0], r[2]);
   std::sort(front.begin(), front.end());
   bool spreads = front.size() >= 3;
@@ -175,9 +185,21 @@ main(int argc, char **argv)
   dealii::deallog << "rupture.dat: nucleation-patch nodes at the first step "
                      "(its 4 inner ones among them), then a front spreading "
                      "along strike: "
-                  << yes(first_t < 0.01 && in_patch && inner == 4 && spreads)
+                  << yes(region && first_t == 0 && in_patch && inner == 4 &&
+                         spreads)
                   << " (" << first_rows << " nodes at the first step, "
                   << front.size() << " east of the patch at 8 km)" << std::endl;
+
+  // catalog.dat: event_no t_start t_end rup_area avg_stress_start
+  // avg_stress_end avg_slip
+  const auto catalog = read_seas(out + "catalog.dat");
+  dealii::deallog << "catalog.dat: the first event from t = 0, over at least "
+                     "the patch, slipping, its stress dropping: "
+                  << yes(!catalog.empty() && catalog[0][0] == 1 &&
+                         catalog[0][1] == 0 && catalog[0][2] > 0 &&
+                         catalog[0][3] >= 144e6 && catalog[0][6] > 0 &&
+                         catalog[0][5] < catalog[0][4])
+                  << std::endl;
 
   bool rake = true;
   for (const auto &name : stations)

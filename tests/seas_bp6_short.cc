@@ -28,6 +28,7 @@
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <rsfcycle/models/green_fault.h>
@@ -78,6 +79,7 @@ namespace
     scenes::declare_parameters(prm);
     // (the .prm's include and mesh file resolved beside it)
     scenes::parse_parameter_file(prm, source + "/../prm/" + prm_file);
+    std::filesystem::remove_all(dir); // (the files of an earlier run)
     prm.parse_input_from_string("set Output directory = " + dir +
                                 "\n"
                                 "set Overwrite output = true\n"

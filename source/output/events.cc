@@ -13,12 +13,14 @@ namespace rsfcycle
                                  const double        convergence_rate,
                                  std::vector<double> positions,
                                  const bool          interpolate_times,
-                                 const double        merge_time)
+                                 const double        merge_time,
+                                 std::vector<double> moment_weights)
       : threshold(threshold)
       , v0(convergence_rate)
       , positions(std::move(positions))
       , interpolate_times(interpolate_times)
       , merge_time(merge_time)
+      , moment_weights(std::move(moment_weights))
     {}
 
 
@@ -121,12 +123,17 @@ namespace rsfcycle
               running.end = interpolate_times ? crossing(t, max_rate) : t;
               const std::vector<std::array<double, 2>> slip_at_end =
                 interpolate_times ? slip_at(running.end, t, slip) : slip;
-              double peak = 0;
+              double peak    = 0;
+              running.moment = 0;
               for (unsigned int k = 0; k < slip.size(); ++k)
-                peak =
-                  std::max(peak,
-                           std::hypot(slip_at_end[k][0] - slip_at_start[k][0],
-                                      slip_at_end[k][1] - slip_at_start[k][1]));
+                {
+                  const double s =
+                    std::hypot(slip_at_end[k][0] - slip_at_start[k][0],
+                               slip_at_end[k][1] - slip_at_start[k][1]);
+                  peak = std::max(peak, s);
+                  if (k < moment_weights.size())
+                    running.moment += moment_weights[k] * s;
+                }
               running.slip = peak - v0 * running.duration();
               active       = false;
               if (merge_time > 0)
@@ -146,17 +153,20 @@ namespace rsfcycle
 
 
     std::string
-    EventDetector::csv_header()
+    EventDetector::csv_header(const bool three_d)
     {
-      return "event,start_s,end_s,duration_s,nucleation_position_m,"
-             "peak_slip_rate_m_per_s,rupture_width_m,slip_um,recurrence_s";
+      return std::string("event,start_s,end_s,duration_s,"
+                         "nucleation_position_m,peak_slip_rate_m_per_s,"
+                         "rupture_width_m,slip_um,recurrence_s,start_yr,") +
+             (three_d ? "moment_N_m,Mw" : "moment_N_m_per_m");
     }
 
 
     void
     EventDetector::write_csv_row(std::ostream      &out,
                                  const unsigned int index,
-                                 const Event       &e)
+                                 const Event       &e,
+                                 const bool         three_d)
     {
       // start and end with every digit (ms events at t ~ 1e10 s)
       out << std::setprecision(17) << index << "," << e.start << "," << e.end
@@ -165,6 +175,15 @@ namespace rsfcycle
           << e.rupture_width() << "," << e.slip * 1e6 << ",";
       if (e.recurrence > 0)
         out << e.recurrence;
+      // a year of 365.25 days, as the SEAS descriptions count them
+      out << "," << e.start / 3.15576e7 << "," << e.moment;
+      if (three_d)
+        {
+          out << ",";
+          if (e.moment > 0)
+            out << std::setprecision(4)
+                << 2. / 3. * (std::log10(e.moment) - 9.1);
+        }
       out << "\n";
     }
 
@@ -208,6 +227,15 @@ namespace rsfcycle
           << " after the transition (first " << transition_events
           << " events and those before t = " << transition_time
           << " s discarded)\n";
+      if (width.empty())
+        {
+          out << "  no event after the transition: no statistics (the "
+                 "largest slip rate "
+              << (catalogue.empty() ? "never exceeded" :
+                                      "exceeded only in the transition")
+              << " the event threshold, " << threshold << " m/s)\n";
+          return;
+        }
       const auto line = [&](const std::string         &name,
                             const std::vector<double> &x,
                             const std::string         &unit) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/serialization/vector.hpp>
 #include <cmath>
+#include <deal.II/base/function_parser.h>
 #include <rsfcycle/format.h>
 #include <rsfcycle/output/seas_plane_files.h>
 #include <sstream>
@@ -43,6 +44,40 @@ namespace rsfcycle
       {
         return std::log10(std::max(std::abs(v), 1e-300));
       }
+
+      /**
+       * The nodes (x2, x3) where the function `expression` of x2 and x3 is
+       * > 0 (the SEAS regions); entry names it in a refusal.
+       */
+      std::vector<char>
+      region(const std::string                        &expression,
+             const std::vector<std::array<double, 2>> &points,
+             const std::string                        &entry)
+      {
+        std::vector<char> inside(points.size(), 1);
+        if (expression == "1")
+          return inside;
+        dealii::FunctionParser<2> f(1);
+        try
+          {
+            f.initialize("x2,x3", expression, {});
+          }
+        catch (...)
+          {
+            throw std::invalid_argument("Output/SEAS/" + entry + " = '" +
+                                        expression +
+                                        "': not a function of x2 and x3");
+          }
+        // (to the micrometre: a node on the region's edge is inside)
+        const auto um = [](const double x) {
+          return std::round(x * 1e6) / 1e6;
+        };
+        for (unsigned int k = 0; k < points.size(); ++k)
+          inside[k] =
+            f.value(dealii::Point<2>(um(points[k][0]), um(points[k][1]))) > 0;
+        return inside;
+      }
+
 
       std::string
       km(const double x)
@@ -96,34 +131,81 @@ namespace rsfcycle
           x2s.push_back(p[0]);
           x3s.push_back(p[1]);
         }
-      grid_x2 = distinct(x2s, tol);
-      grid_x3 = distinct(x3s, tol);
-      grid.assign(grid_x2.size() * grid_x3.size(), -1);
-      for (unsigned int k = 0; k < n; ++k)
-        grid[nearest(grid_x2, plane[k][0]) * grid_x3.size() +
-             nearest(grid_x3, plane[k][1])] = k;
+      grid_x2      = distinct(x2s, tol);
+      grid_x3      = distinct(x3s, tol);
       element_size = std::max(extent, 1.);
       for (const auto *lines : {&grid_x2, &grid_x3})
         for (unsigned int i = 1; i < lines->size(); ++i)
           element_size = std::min(element_size, (*lines)[i] - (*lines)[i - 1]);
+      in_moment = region(parameters.moment_region, plane, "Moment rate region");
+      in_rupture = region(parameters.rupture_region, plane, "Rupture region");
+      if (!parameters.vw_moment_region.empty())
+        in_vw =
+          region(parameters.vw_moment_region, plane, "VW moment rate region");
+      // the load or creep nodes one cell beyond the contact's grid: every
+      // node of the widened grid that is no contact node but lies next to
+      // one along a grid line
+      const bool boundary = parameters.boundary_slip_rate != 0 &&
+                            grid_x2.size() > 1 && grid_x3.size() > 1;
+      if (boundary)
+        for (auto *lines : {&grid_x2, &grid_x3})
+          {
+            auto &v = *lines;
+            v.insert(v.begin(), 2 * v[0] - v[1]);
+            v.push_back(2 * v.back() - v[v.size() - 2]);
+          }
+      const unsigned int m2 = grid_x2.size(), m3 = grid_x3.size();
+      grid.assign(m2 * m3, -1);
+      for (unsigned int k = 0; k < n; ++k)
+        grid[nearest(grid_x2, plane[k][0]) * m3 +
+             nearest(grid_x3, plane[k][1])] = k;
+      if (boundary)
+        for (unsigned int i = 0; i < m2; ++i)
+          for (unsigned int j = 0; j < m3; ++j)
+            {
+              if (grid[i * m3 + j] >= 0)
+                continue;
+              int next = -1;
+              for (const auto &[di, dj] : {std::make_pair(-1, 0),
+                                           std::make_pair(1, 0),
+                                           std::make_pair(0, -1),
+                                           std::make_pair(0, 1)})
+                {
+                  const long a = long(i) + di, b = long(j) + dj;
+                  if (a >= 0 && a < long(m2) && b >= 0 && b < long(m3) &&
+                      grid[a * m3 + b] >= 0 && grid[a * m3 + b] < long(n))
+                    next = grid[a * m3 + b];
+                }
+              if (next < 0)
+                continue;
+              grid[i * m3 + j] = plane.size();
+              plane.push_back({{grid_x2[i], grid_x3[j]}});
+              neighbour.push_back(next);
+            }
 
-      for (const auto &x : parameters.plane_stations)
+      for (unsigned int i = 0; i < parameters.plane_stations.size(); ++i)
         {
+          const auto &x = parameters.plane_stations[i];
           stations.push_back(locate(x[0], x[1], "Plane stations"));
-          add_file(dir, parameters.plane_station_file(x));
+          add_file(dir, parameters.plane_station_file(i), true);
         }
-      if (!layout.station_names.empty() && layout.observation_components != 3)
+      if (conventions.off_fault && !layout.station_names.empty() &&
+          layout.observation_components != 3)
         throw std::invalid_argument(
           "Mesh file/Observation components = up: the SEAS off-fault "
           "stations (blkst_NAME) of 3D models need all three components");
       first_block = file_paths.size();
-      for (const auto &name : layout.station_names)
-        {
-          block_names.push_back(name);
-          add_file(dir, "blkst_" + name);
-        }
-      global  = add_file(dir, "global.dat");
-      rupture = add_file(dir, "rupture.dat");
+      if (conventions.off_fault)
+        for (const auto &name : layout.station_names)
+          {
+            block_names.push_back(name);
+            add_file(dir, "blkst_" + name, true);
+          }
+      if (conventions.global)
+        global = add_file(dir, "global.dat", true);
+      rupture = add_file(dir, "rupture.dat", false);
+      if (conventions.catalog)
+        catalog = add_file(dir, "catalog.dat", false);
 
       const auto line = [&](const std::array<double, 4> &range,
                             const bool                   along_strike,
@@ -144,11 +226,14 @@ namespace rsfcycle
       line(parameters.depth_profile, false, depth_x3, depth_line);
       first_profile = file_paths.size();
       for (const std::string suffix : {"strike", "depth"})
-        for (const std::string field :
-             {"slip_2", "slip_3", "shear_stress_2", "shear_stress_3"})
-          add_file(dir, field + "_" + suffix + ".dat");
+        for (const std::string &field : {std::string("slip_2"),
+                                         std::string("slip_3"),
+                                         conventions.stress_profile + "_2",
+                                         conventions.stress_profile + "_3"})
+          add_file(dir, field + "_" + suffix + ".dat", true);
 
-      armed.assign(n, 1);
+      std::vector<double> area(weights);
+      events = SeasEvents(parameters.rupture_threshold, 10., area);
     }
 
 
@@ -223,75 +308,83 @@ namespace rsfcycle
     {
       const auto &p = parameters;
       for (unsigned int i = 0; i < stations.size(); ++i)
-        write_header(i,
-                     "on fault, " + km(p.plane_stations[i][0]) +
-                       " km along strike, " + km(p.plane_stations[i][1]) +
-                       " km depth",
-                     {{"t", "Time (s)"},
-                      {"slip_2", "Slip_2, along strike (m)"},
-                      {"slip_3", "Slip_3, along dip, down (m)"},
-                      {"slip_rate_2", "Slip_rate_2 (log10 |m/s|)"},
-                      {"slip_rate_3", "Slip_rate_3 (log10 |m/s|)"},
-                      {"shear_stress_2", "Shear_stress_2 (MPa)"},
-                      {"shear_stress_3", "Shear_stress_3 (MPa)"},
-                      {"state", "State (log10 s)"}});
+        write_series_header(i,
+                            "on fault, " + km(p.plane_stations[i][0]) +
+                              "km along strike, " + km(p.plane_stations[i][1]) +
+                              "km depth",
+                            {{"t", "Time (s)"},
+                             {"slip_2", "Slip_2 (m)"},
+                             {"slip_3", "Slip_3 (m)"},
+                             {"slip_rate_2", "Slip_rate_2 (log10 m/s)"},
+                             {"slip_rate_3", "Slip_rate_3 (log10 m/s)"},
+                             {"shear_stress_2", "Shear_stress_2 (MPa)"},
+                             {"shear_stress_3", "Shear_stress_3 (MPa)"},
+                             {"state", "State (log10 s)"}});
       for (unsigned int i = 0; i < block_names.size(); ++i)
-        write_header(
-          first_block + i,
-          "off fault, observation point " + block_names[i] +
-            " (1 = fault normal, the mesh's y; 2 = along strike, x; 3 = "
-            "down, -z)",
-          {{"t", "Time (s)"},
-           {"disp_1", "Displacement_1 (m)"},
-           {"disp_2", "Displacement_2 (m)"},
-           {"disp_3", "Displacement_3 (m)"},
-           {"vel_1", "Velocity_1 (m/s)"},
-           {"vel_2", "Velocity_2 (m/s)"},
-           {"vel_3", "Velocity_3 (m/s)"}});
-      write_header(global,
-                   "global",
-                   {{"t", "Time (s)"},
-                    {"max_slip_rate", "Max slip rate (log10 m/s)"},
-                    {"moment_rate", "Moment rate (N m/s)"}});
-      write_header(rupture,
-                   "on fault, rupture fronts: the first time of each event "
-                   "at which a node's slip rate reaches " +
-                     format_number(p.rupture_threshold) + " m/s",
-                   {{"x2", "x2, along strike (m)"},
-                    {"x3", "x3, depth (m)"},
-                    {"t", "Time (s)"}},
-                   "Here is the data.");
+        write_series_header(first_block + i,
+                            "off fault, observation point " + block_names[i] +
+                              " (1 = fault normal, the mesh's y; 2 = along "
+                              "strike, x; 3 = down, -z)",
+                            {{"t", "Time (s)"},
+                             {"disp_1", "Displacement_1 (m)"},
+                             {"disp_2", "Displacement_2 (m)"},
+                             {"disp_3", "Displacement_3 (m)"},
+                             {"vel_1", "Velocity_1 (m/s)"},
+                             {"vel_2", "Velocity_2 (m/s)"},
+                             {"vel_3", "Velocity_3 (m/s)"}});
+      if (conventions.global)
+        {
+          std::vector<Column> columns = {
+            {"t", "Time (s)"},
+            {"max_slip_rate", "Max slip rate (log10 m/s)"},
+            {"moment_rate", "Moment rate (N-m/s)"}};
+          if (!in_vw.empty())
+            columns.emplace_back("moment_rate_vw",
+                                 "Moment rate of VW patch (N-m/s)");
+          write_series_header(global,
+                              p.moment_region == "1" ?
+                                "the whole frictional domain" :
+                                "the region " + p.moment_region,
+                              columns);
+        }
+      write_table_header(rupture,
+                         {{"x2", "x2 (m)"},
+                          {"x3", "x3 (m)"},
+                          {"t",
+                           "time (s) the slip rate first reaches " +
+                             format_number(p.rupture_threshold) +
+                             " m/s in the first event; 1e9: never"}});
+      if (conventions.catalog)
+        write_table_header(catalog,
+                           {{"event_no", "Event number"},
+                            {"t_start", "Event start time (s)"},
+                            {"t_end", "Event end time (s)"},
+                            {"rup_area", "Rupture area (m^2)"},
+                            {"avg_stress_start",
+                             "Stress avg at start time (MPa)"},
+                            {"avg_stress_end", "Stress avg at end time (MPa)"},
+                            {"avg_slip", "Avg slip in rupture area (m)"}});
       unsigned int f = first_profile;
       for (const bool strike : {true, false})
-        for (const std::string field : {"Slip_2 (m)",
-                                        "Slip_3 (m)",
-                                        "Shear_stress_2 (MPa)",
-                                        "Shear_stress_3 (MPa)"})
-          {
-            const auto &range = strike ? p.strike_profile : p.depth_profile;
-            std::string line =
-              strike ? "along strike at depth " + km(range[0]) + " km" :
-                       "down dip at " + km(range[0]) + " km along strike";
-            write_header(f,
-                         "on fault, profiles " + line,
-                         {{"t", "Time (s)"},
-                          {"max_slip_rate", "Max slip rate (log10 m/s)"},
-                          {"values", field + ", one column per position"}},
-                         "Here is the data.",
-                         std::string("# Row #1 = 0 0, then the positions ") +
-                           (strike ? "x2 (m)\n" : "x3, depth (m)\n"));
-            row << 0. << 0.;
-            for (const double x : strike ? strike_x2 : depth_x3)
-              row << x;
-            row.write_line(*streams[f++]);
-          }
+        for (const auto &[field, text] :
+             {std::make_pair(std::string("slip_2"), "Slip_2 (m)"),
+              std::make_pair(std::string("slip_3"), "Slip_3 (m)"),
+              std::make_pair(conventions.stress_profile + "_2",
+                             "Shear_stress_2 (MPa)"),
+              std::make_pair(conventions.stress_profile + "_3",
+                             "Shear_stress_3 (MPa)")})
+          write_profile_header(f++,
+                               strike ? "Strike (m)" : "Depth (m)",
+                               strike ? "x2" : "x3",
+                               {field, text},
+                               strike ? strike_x2 : depth_x3);
     }
 
 
     void
-    SeasPlaneFiles::fill(const Sample &sample)
+    SeasPlaneFiles::fill(const double t, const Sample &sample)
     {
-      const unsigned int n = plane.size();
+      const unsigned int n = sample.slip_rates.size(), m = plane.size();
       for (auto *v : {&slip_2,
                       &slip_3,
                       &log10_rate_2,
@@ -300,7 +393,7 @@ namespace rsfcycle
                       &stress_2,
                       &stress_3,
                       &log10_state})
-        v->resize(n);
+        v->resize(m);
       double max_rate = 0;
       for (unsigned int k = 0; k < n; ++k)
         {
@@ -327,78 +420,116 @@ namespace rsfcycle
           stress_2[k]      = V > 0 ? tau * v[0] / V : 0.;
           stress_3[k]      = V > 0 ? tau * v[1] / V : 0.;
           log10_state[k]   = sample.log10_states[k];
-          max_rate         = std::max(max_rate, V);
+          if (in_moment[k])
+            max_rate = std::max(max_rate, V);
+        }
+      // the creep nodes beyond the contact: the boundary's slip along
+      // strike, the stresses and state of the contact node next to them
+      const double V_b = parameters.boundary_slip_rate;
+      for (unsigned int k = n; k < m; ++k)
+        {
+          const unsigned int j = neighbour[k - n];
+          slip_2[k]            = V_b * t;
+          slip_3[k]            = 0;
+          log10_rate_2[k] = log10_rate[k] = log10_of(V_b);
+          log10_rate_3[k]                 = log10_of(0);
+          stress_2[k]                     = stress_2[j];
+          stress_3[k]                     = stress_3[j];
+          log10_state[k]                  = log10_state[j];
         }
       log10_max_rate = log10_of(max_rate);
     }
 
 
     void
-    SeasPlaneFiles::track_rupture(const double t)
+    SeasPlaneFiles::write_events(const std::optional<SeasEvents::Row> &row)
     {
-      const double       threshold = std::log10(parameters.rupture_threshold);
-      const bool         first     = previous_log10_rate.empty();
-      const unsigned int n         = plane.size();
-      for (unsigned int k = 0; k < n; ++k)
-        if (armed[k] && log10_rate[k] >= threshold)
+      if (row && conventions.catalog && writing)
+        {
+          this->row << row->number;
+          this->row.precise(row->start);
+          this->row.precise(row->end)
+            << row->area << row->stress_start << row->stress_end << row->slip;
+          write_row(catalog);
+        }
+      if (events.first_over())
+        write_rupture();
+    }
+
+
+    void
+    SeasPlaneFiles::write_rupture()
+    {
+      if (rupture_written)
+        return;
+      rupture_written = true;
+      if (!writing)
+        return;
+      const auto &times = events.rupture_times();
+      for (unsigned int k = 0; k < times.size(); ++k)
+        if (in_rupture[k])
           {
-            double arrival = t;
-            if (!first && previous_log10_rate[k] < threshold)
-              arrival = previous_t + (t - previous_t) *
-                                       (threshold - previous_log10_rate[k]) /
-                                       (log10_rate[k] - previous_log10_rate[k]);
-            armed[k] = 0;
-            if (writing)
-              {
-                row << plane[k][0] << plane[k][1];
-                row.precise(arrival);
-                row.write_line(*streams[rupture]);
-              }
+            row << plane[k][0] << plane[k][1];
+            row.precise(times[k]);
+            write_row(rupture);
           }
-      if (log10_max_rate < threshold)
-        armed.assign(n, 1);
-      previous_log10_rate = log10_rate;
-      previous_t          = t;
     }
 
 
     void
     SeasPlaneFiles::write(const Record &record)
     {
+      write_rows(record);
+    }
+
+
+    void
+    SeasPlaneFiles::write_rows(const Record &record)
+    {
       const double t      = record.t;
       const auto  &sample = *record.sample;
-      fill(sample);
-      if (writing)
+      fill(t, sample);
+      const bool profile = profile_due(record);
+      write_events(
+        events.update(t,
+                      {&log10_rate, &stress_2, &stress_3, &slip_2, &slip_3}));
+      if (!writing)
+        return;
+      for (unsigned int i = 0; i < stations.size(); ++i)
         {
-          for (unsigned int i = 0; i < stations.size(); ++i)
+          const auto &w = stations[i];
+          row.precise(t) << at(w, slip_2) << at(w, slip_3)
+                         << at(w, log10_rate_2) << at(w, log10_rate_3)
+                         << at(w, stress_2) << at(w, stress_3)
+                         << at(w, log10_state);
+          write_row(i, t);
+        }
+      const double factor = parameters.mirror ? 0.5 : 1.;
+      for (unsigned int i = 0; i < block_names.size(); ++i)
+        {
+          // the mesh's x, y, z as 2, 1, -3
+          const double *u = &sample.observations[3 * i];
+          const double *v = &sample.observation_rates[3 * i];
+          row.precise(t) << factor * u[1] << factor * u[0] << -factor * u[2]
+                         << factor * v[1] << factor * v[0] << -factor * v[2];
+          write_row(first_block + i, t);
+        }
+      if (conventions.global)
+        {
+          double moment_rate = 0, vw_rate = 0;
+          for (unsigned int k = 0; k < sample.slip_rates.size(); ++k)
             {
-              const auto &w = stations[i];
-              row.precise(t)
-                << at(w, slip_2) << at(w, slip_3) << at(w, log10_rate_2)
-                << at(w, log10_rate_3) << at(w, stress_2) << at(w, stress_3)
-                << at(w, log10_state);
-              row.write_line(*streams[i]);
+              const double m = weights[k] * sample.slip_rates[k];
+              moment_rate += in_moment[k] ? m : 0.;
+              vw_rate += !in_vw.empty() && in_vw[k] ? m : 0.;
             }
-          const double factor = parameters.mirror ? 0.5 : 1.;
-          for (unsigned int i = 0; i < block_names.size(); ++i)
-            {
-              // the mesh's x, y, z as 2, 1, -3
-              const double *u = &sample.observations[3 * i];
-              const double *v = &sample.observation_rates[3 * i];
-              row.precise(t)
-                << factor * u[1] << factor * u[0] << -factor * u[2]
-                << factor * v[1] << factor * v[0] << -factor * v[2];
-              row.write_line(*streams[first_block + i]);
-            }
-          double moment_rate = 0;
-          for (unsigned int k = 0; k < plane.size(); ++k)
-            moment_rate += weights[k] * sample.slip_rates[k];
           row.precise(t) << log10_max_rate
                          << parameters.shear_modulus * moment_rate;
-          row.write_line(*streams[global]);
+          if (!in_vw.empty())
+            row << parameters.shear_modulus * vw_rate;
+          write_row(global, t);
         }
-      track_rupture(t);
-      if (profile_due(record) && writing)
+      if (profile)
         {
           unsigned int f = first_profile;
           for (const auto *line : {&strike_line, &depth_line})
@@ -407,11 +538,21 @@ namespace rsfcycle
                 row.precise(t) << log10_max_rate;
                 for (const auto &w : *line)
                   row << at(w, *field);
-                row.write_line(*streams[f++]);
+                write_row(f++, t);
               }
         }
-      if (writing)
-        check();
+      check();
+    }
+
+
+    void
+    SeasPlaneFiles::finish(const Record &record)
+    {
+      // an event below the threshold for less than the quiet time when the
+      // run ends is over; rupture.dat in any case
+      write_events(events.pending());
+      write_rupture();
+      SeasFileSet::finish(record);
     }
 
 
@@ -419,7 +560,7 @@ namespace rsfcycle
     SeasPlaneFiles::save(boost::archive::binary_oarchive &archive) const
     {
       SeasFileSet::save(archive);
-      archive << previous_t << previous_log10_rate << armed;
+      archive << events << rupture_written;
     }
 
 
@@ -427,7 +568,7 @@ namespace rsfcycle
     SeasPlaneFiles::load(boost::archive::binary_iarchive &archive)
     {
       SeasFileSet::load(archive);
-      archive >> previous_t >> previous_log10_rate >> armed;
+      archive >> events >> rupture_written;
     }
   } // namespace output
 } // namespace rsfcycle

@@ -18,7 +18,9 @@ namespace rsfcycle
       std::vector<std::unique_ptr<Writer>> writers;
       writers.push_back(std::make_unique<TimeSeries>(dir, layout));
       writers.push_back(std::make_unique<BaseProfile>(dir, layout, out));
-      writers.push_back(std::make_unique<EventCatalogue>(dir));
+      writers.push_back(
+        std::make_unique<EventCatalogue>(dir,
+                                         !layout.lateral_positions.empty()));
       if (out.seas.enabled() && layout.lateral_positions.empty())
         writers.push_back(std::make_unique<SeasFiles>(dir, out.seas, layout));
       else if (out.seas.enabled())

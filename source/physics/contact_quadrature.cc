@@ -38,6 +38,7 @@ namespace rsfcycle
       {
         Point<dim>              position;
         types::global_dof_index scalar_dof, normal_dof, lateral_dof;
+        types::material_id      material;
       };
       std::map<types::global_dof_index, BaseVertex> base_vertices; // by x dof
 
@@ -70,7 +71,8 @@ namespace rsfcycle
                     n_components > 1 ? face->vertex_dof_index(v, 1) :
                                        numbers::invalid_dof_index,
                     n_components == 3 ? face->vertex_dof_index(v, 2) :
-                                        numbers::invalid_dof_index};
+                                        numbers::invalid_dof_index,
+                    cell->material_id()};
               if (!cell->is_locally_owned())
                 continue;
               fe_face.reinit(cell, f);
@@ -113,6 +115,7 @@ namespace rsfcycle
           if (node.n_dofs == 0)
             continue;
           info.position   = vertex.position;
+          info.material   = vertex.material;
           info.weight     = weights(x_dof);
           info.params     = parameters_at(vertex.position);
           info.scalar_dof = vertex.scalar_dof;

@@ -32,8 +32,9 @@ namespace
   /**
    * The SEAS files: rows and last row of each station file (slips and
    * displacements in um, rates as log10 or over v0, stresses in MPa),
-   * the peak of global.dat's max slip rate, slip.dat's rows and the
-   * slips of its last row at the first, middle and last position [um].
+   * the peak of global.dat's max slip rate (where the benchmark has one),
+   * the slip profile's rows (slip.dat, BP1's devol.dat) and the slips of
+   * its last row at the first, middle and last position [um].
    */
   void
   digest_seas(const rsfcycle::Parameters     &parameters,
@@ -53,31 +54,36 @@ namespace
             << last[1] * 1e6 << " " << last[2] << " " << last[3] << " "
             << last[4] << "\n";
       }
+    const auto conventions = parameters.output.seas.conventions();
     out << "SEAS surface stations: rows; last t [s], disp [um], vel / v0\n";
     for (const auto &name : surface_stations)
+      if (conventions.off_fault)
+        {
+          const auto rows = read_seas(dir + "srfst_" + name);
+          const auto last = rows.back();
+          out << "srfst_" << name << " " << rows.size() << "; " << last[0]
+              << " " << last[1] * 1e6 << " " << last[2] / v0 << "\n";
+        }
+    if (conventions.global)
       {
-        const auto rows = read_seas(dir + "srfst_" + name);
-        const auto last = rows.back();
-        out << "srfst_" << name << " " << rows.size() << "; " << last[0] << " "
-            << last[1] * 1e6 << " " << last[2] / v0 << "\n";
+        const auto  global = read_seas(dir + "global.dat");
+        std::size_t peak   = 0;
+        for (std::size_t r = 0; r < global.size(); ++r)
+          if (global[r][1] > global[peak][1])
+            peak = r;
+        out << "global.dat rows " << global.size() << "; peak log10 max V "
+            << global[peak][1] << " at t = " << global[peak][0]
+            << " s; last moment rate [N/s] " << global.back()[2] << "\n";
       }
-    const auto  global = read_seas(dir + "global.dat");
-    std::size_t peak   = 0;
-    for (std::size_t r = 0; r < global.size(); ++r)
-      if (global[r][1] > global[peak][1])
-        peak = r;
-    out << "global.dat rows " << global.size() << "; peak log10 max V "
-        << global[peak][1] << " at t = " << global[peak][0]
-        << " s; last moment rate [N/s] " << global.back()[2] << "\n";
-    const auto        profiles = read_seas(dir + "slip.dat");
+    const auto        profiles = read_seas(dir + conventions.slip_profile_file);
     const auto       &x        = profiles.front();
     const auto       &last     = profiles.back();
     const std::size_t n        = x.size();
-    out << "slip.dat: " << profiles.size() - 1 << " profiles of " << n - 2
-        << " positions; last t = " << last[0] << " s, log10 max V " << last[1]
-        << ", slip [um] at " << x[2] << " / " << x[n / 2 + 1] << " / "
-        << x[n - 1] << " m: " << last[2] * 1e6 << " / " << last[n / 2 + 1] * 1e6
-        << " / " << last[n - 1] * 1e6 << "\n";
+    out << conventions.slip_profile_file << ": " << profiles.size() - 1
+        << " profiles of " << n - 2 << " positions; last t = " << last[0]
+        << " s, log10 max V " << last[1] << ", slip [um] at " << x[2] << " / "
+        << x[n / 2 + 1] << " / " << x[n - 1] << " m: " << last[2] * 1e6 << " / "
+        << last[n / 2 + 1] * 1e6 << " / " << last[n - 1] * 1e6 << "\n";
   }
 
   template <int dim>

@@ -130,7 +130,7 @@ check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset 
 # contact normal, and an other side whose nodes do not all pair (tag 12
 # given the role free: the creeping fault's nodes have no partner; refused
 # after the set-up, before the run folder).
-split="subsection Mesh file\nset File = $src/tests/meshes/split-fault-2d.msh\nset Materials = 10: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0; 20: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0\nset Gravity = 0, 0\nset Observation points =\nset Boundary roles = %ROLES%\nend\nsubsection Output\nset Write VTU = false\nsubsection SEAS\nset Problem =\nend\nend"
+split="subsection Mesh file\nset File = $src/tests/meshes/split-fault-2d.msh\nset Materials = 10: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0; 20: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0\nset Gravity = 0, 0\nset Observation points =\nset Boundary roles = %ROLES%\nend\nsubsection Output\nset Write VTU = false\nsubsection SEAS\nset Benchmark = none\nend\nend"
 check_split() { # name, expected word, roles, prm body
   check_bp1 "$1" "$2" "${split//%ROLES%/$3}\n$4"
 }
@@ -141,8 +141,8 @@ check_split split-unpaired "has no node of a fault-opposite face" "1: contact, 2
 # The SEAS files of 3D models (SEAS BP5 on its coarse 4 km cells): station
 # syntax, a station off the contact (on the coarse mesh, before the
 # operator is built), two stations with one file name, a profile beyond the
-# contact nodes (those of the load are not; after the operator's set-up,
-# still before the run folder), off-fault stations without all components,
+# contact nodes and the creeping node next to them (after the operator's
+# set-up, still before the run folder), off-fault stations without all components,
 # and all components with antiplane (BP1); a creep face off the contact's
 # plane, and a free contact normal that nothing else holds (the body's
 # rigid motion across the plane).
@@ -155,7 +155,7 @@ check_bp5() { # name, expected word, prm body (appended after the include)
 check_bp5 seas-plane-syntax "Plane stations: '1, 2, 3' is not 'x2, x3'" 'subsection Output\nsubsection SEAS\nset Plane stations = 1, 2, 3\nend\nend'
 check_bp5 seas-plane-outside "Plane stations: (x2, x3) = (60000, 10000) m lies outside the contact" 'subsection Output\nsubsection SEAS\nset Plane stations = 0, 0; 60e3, 10e3\nend\nend'
 check_bp5 seas-plane-names "share the file name fltst_strk+00dp+00" 'subsection Output\nsubsection SEAS\nset Plane stations = 0, 0; 100, 0\nend\nend'
-check_bp5 seas-depth-profile "Depth profile: (x2, x3) = (0, 37000) m lies outside the contact nodes" ''
+check_bp5 seas-depth-profile "Depth profile: (x2, x3) = (0, 44000) m lies outside the contact" 'subsection Output\nsubsection SEAS\nset Depth profile = 0, 0, 44e3, 1e3\nend\nend'
 check_bp5 seas-blkst-components "Observation components = up" 'subsection Mesh file\nset Observation components = up\nend\nsubsection Output\nsubsection SEAS\nset Depth profile = 0, 0, 36e3, 1e3\nend\nend'
 check_bp5 creep-off-plane "a creep face (tag 3) is not in the contact's plane" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: free-slip, 3: creep, 4: free, 5: creep, 6: free\nend'
 check_bp5 free-normal-unheld "Contact normal = free: no boundary holds the body's motion normal to the contact" 'subsection Mesh file\nset Boundary roles = 1: contact, 2: free, 3: free, 4: free, 5: creep, 6: free\nend'

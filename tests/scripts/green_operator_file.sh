@@ -52,7 +52,7 @@ grep -q "block solves" a/log.txt || fail "run a did not compute the operator"
 make_prm b "subsection Solver" "  set Green operator file = ../a/green-operator.bin" "end"
 "$exe" prm/b.prm > b.out 2>&1 || fail "run b"
 grep -q "read from $work/a/green-operator.bin" b/log.txt || fail "run b did not read a's operator"
-for f in green-operator.bin time-series.csv events.csv base-profile.csv global.dat srfst_fn+08; do
+for f in green-operator.bin time-series.csv events.csv base-profile.csv devol.dat fltst_dp075; do
   cmp -s a/$f b/$f || fail "$f differs between the computed and the read operator"
 done
 echo "b: read a's operator, results bitwise identical"

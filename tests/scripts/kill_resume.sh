@@ -138,7 +138,7 @@ check_resume() { # label, prm maker
 
   "$exe" $a.prm > $a.log 2>&1 || fail "uninterrupted run"
   # the SEAS files of the run, if any
-  seas=$(cd $a && ls fltst_* srfst_* global.dat slip.dat 2>/dev/null)
+  seas=$(cd $a && ls fltst_* srfst_* blkst_* *.dat 2>/dev/null)
   # the VTU records and the last snapshot, if any (compared without
   # deal.II's line with the date of writing)
   vtu="$(cd $a && ls solution.pvd fault.pvd 2>/dev/null) $(cd $a && ls solution/*.vtu 2>/dev/null | tail -1)"

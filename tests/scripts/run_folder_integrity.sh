@@ -117,8 +117,8 @@ refused damaged "head -c 64 /dev/zero | tr '\\0' 'Z' | dd of=checkpoint.bin bs=1
   "checksum mismatch: the checkpoint is damaged"
 refused other-mesh 'cp ../coarser/checkpoint.bin checkpoint.bin' \
   "written for $(grep -o '[0-9]* unknowns' coarser.log | head -1), this run has $(grep -o '[0-9]* unknowns' wedge.log | head -1 | cut -d' ' -f1)"
-refused other-format "printf '\\x04' | dd of=checkpoint.bin bs=1 seek=8 conv=notrunc 2> /dev/null" \
-  "written in checkpoint format 4"
+refused other-format "printf '\\x05' | dd of=checkpoint.bin bs=1 seek=8 conv=notrunc 2> /dev/null" \
+  "written in checkpoint format 5"
 
 # the advice of the message: the previous checkpoint continues the run
 mv truncated/checkpoint.bin.prev truncated/checkpoint.bin
@@ -154,9 +154,9 @@ else
     fail "resume after the failed write"
   fi
 
-  # a VTU snapshot over the limit (parameters.prm, about 19 kB, fits)
+  # a VTU snapshot over the limit (parameters.prm, about 35 kB, fits)
   make_wedge_prm vtu 5
-  limited 32 "$exe" vtu.prm > vtu.out 2> vtu.err
+  limited 48 "$exe" vtu.prm > vtu.out 2> vtu.err
   status=$?
   if [ $status -eq 1 ] &&
      one_line_error vtu.err "vtu/solution/solution-00000.vtu: File too large"; then

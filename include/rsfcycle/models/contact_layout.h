@@ -26,7 +26,7 @@ namespace rsfcycle
                    const physics::ContactQuadrature<dim> &contact)
     {
       output::Layout                     layout;
-      std::vector<double>                s, z, w;
+      std::vector<double>                s, z, w, G;
       std::vector<std::array<double, 3>> points;
       const auto [Q, c] = scene.output_frame();
       for (const auto &node : contact.nodes())
@@ -34,14 +34,16 @@ namespace rsfcycle
           s.push_back(scene.along_base_coordinate(node.position));
           z.push_back(node.position[dim - 1]);
           w.push_back(node.weight);
+          G.push_back(scene.material(node.material).shear_modulus());
           const dealii::Point<dim> x = c + Q * node.position;
           std::array<double, 3>    p{};
           for (unsigned int d = 0; d < dim; ++d)
             p[d] = x[d];
           points.push_back(p);
         }
-      layout.positions = contact.gather(s);
-      layout.weights   = contact.gather(w);
+      layout.positions    = contact.gather(s);
+      layout.weights      = contact.gather(w);
+      layout.shear_moduli = contact.gather(G);
       if (dim == 3)
         {
           layout.lateral_positions = contact.gather(z);

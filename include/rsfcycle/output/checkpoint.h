@@ -17,9 +17,10 @@ namespace rsfcycle
      * whenever the header or anything serialised changes (the simulator's
      * LoopState, the integrator's memory, a writer's save()): a checkpoint
      * of another format is refused on resume, never misread. Format 3: the
-     * writers keep their own times and file sizes.
+     * writers keep their own times and file sizes; format 4: the SEAS files'
+     * time-step statistics, the events' moments.
      */
-    constexpr std::uint32_t checkpoint_format = 3;
+    constexpr std::uint32_t checkpoint_format = 4;
 
     /**
      * What a checkpoint was written for, given by the model: its scene, the

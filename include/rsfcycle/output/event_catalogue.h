@@ -15,8 +15,10 @@ namespace rsfcycle
     class EventCatalogue : public CsvFile
     {
     public:
-      explicit EventCatalogue(const std::string &dir)
+      /** `three_d`: the moment in N m and the magnitude (else per m). */
+      EventCatalogue(const std::string &dir, const bool three_d)
         : CsvFile(dir, "events.csv")
+        , three_d(three_d)
       {}
 
       std::string
@@ -31,7 +33,10 @@ namespace rsfcycle
         if (!writing || !record.event_ended)
           return;
         const auto &events = record.events->events();
-        EventDetector::write_csv_row(file, events.size(), events.back());
+        EventDetector::write_csv_row(file,
+                                     events.size(),
+                                     events.back(),
+                                     three_d);
         file.flush();
         check();
       }
@@ -40,8 +45,10 @@ namespace rsfcycle
       void
       write_header(std::ostream &out) override
       {
-        out << EventDetector::csv_header() << "\n";
+        out << EventDetector::csv_header(three_d) << "\n";
       }
+
+      const bool three_d;
     };
   } // namespace output
 } // namespace rsfcycle

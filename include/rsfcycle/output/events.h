@@ -30,6 +30,8 @@ namespace rsfcycle
       double recurrence = 0;          // start - previous start [s]; 0 first
       double start_slip = 0;          // |slip| of the nucleation node at
                                       // the start [m]
+      double moment = 0; // sum of G w |slip during the event| over the
+                         // nodes [N m; in 2D N m per m along strike]
 
       double
       duration() const
@@ -47,7 +49,7 @@ namespace rsfcycle
       serialize(Archive &ar, const unsigned int)
       {
         ar &start &end &nucleation_position &peak_slip_rate &rupture_min
-          &rupture_max &slip &recurrence &start_slip;
+          &rupture_max &slip &recurrence &start_slip &moment;
       }
     };
 
@@ -76,11 +78,17 @@ namespace rsfcycle
     class EventDetector
     {
     public:
+      /**
+       * `moment_weights`: each node's shear modulus times its lumped
+       * weight (length or area) [N/m, N/m^0 in 2D], for the events'
+       * seismic moments; empty: no moments.
+       */
       EventDetector(double              threshold,
                     double              convergence_rate,
                     std::vector<double> positions,
                     bool                interpolate_times = false,
-                    double              merge_time        = 0);
+                    double              merge_time        = 0,
+                    std::vector<double> moment_weights    = {});
 
       /**
        * Record the accepted state at time t. `slip` holds the tangential
@@ -130,11 +138,19 @@ namespace rsfcycle
         return running;
       }
 
-      /** Header and one row of events.csv. */
+      /**
+       * Header and one row of events.csv: besides the event's figures its
+       * start in years (of 365.25 days) and its seismic moment, per metre
+       * along strike in 2D (moment_N_m_per_m), with the moment magnitude
+       * Mw = 2/3 (log10 M0 - 9.1) in 3D (moment_N_m, Mw).
+       */
       static std::string
-      csv_header();
+      csv_header(bool three_d);
       static void
-      write_csv_row(std::ostream &out, unsigned int index, const Event &e);
+      write_csv_row(std::ostream &out,
+                    unsigned int  index,
+                    const Event  &e,
+                    bool          three_d);
 
       /**
        * Statistics after discarding the transition: events that start
@@ -148,8 +164,9 @@ namespace rsfcycle
                     unsigned int  transition_events) const;
 
       /**
-       * Class version 1 (BOOST_CLASS_VERSION below) adds `pending`;
-       * `merge_time` is the run's parameter, not stored.
+       * Class version 1 (BOOST_CLASS_VERSION below) adds `pending`, 2 the
+       * events' moments; `merge_time` and the moment weights are the
+       * run's parameters, not stored.
        */
       template <class Archive>
       void
@@ -177,8 +194,9 @@ namespace rsfcycle
       std::vector<double>                positions;
       bool                               interpolate_times = false;
       double                             merge_time        = 0;
-      bool                               active            = false;
-      bool                               pending           = false;
+      std::vector<double>                moment_weights;
+      bool                               active  = false;
+      bool                               pending = false;
       Event                              running;
       std::vector<std::array<double, 2>> previous_slip, slip_at_start;
       double                             last_start = -1;
@@ -189,6 +207,6 @@ namespace rsfcycle
   } // namespace output
 } // namespace rsfcycle
 
-BOOST_CLASS_VERSION(rsfcycle::output::EventDetector, 1)
+BOOST_CLASS_VERSION(rsfcycle::output::EventDetector, 2)
 
 #endif

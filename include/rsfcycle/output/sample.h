@@ -68,6 +68,11 @@ namespace rsfcycle
       std::vector<double>      lateral_positions;
       std::vector<std::string> observation_names;
       std::vector<double>      weights;
+      /**
+       * The shear modulus of the body at every node [Pa] (the events'
+       * moments; empty: none, as for the spring-slider).
+       */
+      std::vector<double>      shear_moduli;
       std::vector<std::string> station_names;
       /**
        * The columns recorded per observation point (Sample::observations

@@ -13,21 +13,28 @@ namespace rsfcycle
   namespace output
   {
     /**
-     * The plain-text files of the SCEC SEAS benchmarks (Erickson et al.
-     * 2020, Seismol. Res. Lett. 91, 874; the BP1-QD description), written
-     * by the first rank into the run folder, for a 2D model (a 1D fault):
+     * The plain-text files of the SCEC SEAS benchmarks for a 2D model (a
+     * 1D fault), as the benchmark's description names and heads them
+     * (SeasConventions; doc/seas.md, "The files each problem writes"),
+     * written by the first rank into the run folder, from t = 0:
      *  - fltst_dpXXX, one per fault station at the along-contact position
      *    XXX x 100 m: t slip slip_rate shear_stress state (s, m, log10 m/s,
      *    MPa, log10 s), every accepted step, linear between the two nodes
-     *    around the station; with a pore fluid (SEAS BP6) also
-     *    pore_pressure (MPa) and darcy_vel (m/s) before state, and with
-     *    strike names fltst_strk+XX, XX from `Fault station origin`;
-     *  - srfst_NAME, one per observation point NAME: t disp vel (m, m/s);
-     *  - global.dat: t max_slip_rate moment_rate (s, log10 m/s, N/s per
-     *    metre along strike: G int V ds with the entry Shear modulus);
-     *  - slip.dat: a row of positions (after two zeros), then t,
-     *    max_slip_rate and the slip at those positions, every `Slip profile
-     *    interval`, during events every `Event slip profile interval`.
+     *    around the station; with a split fault's normal coupling (BP3)
+     *    normal_stress (MPa) before state, with a pore fluid (BP6)
+     *    pore_pressure (MPa) and darcy_vel (m/s), and with strike names
+     *    fltst_strk+XX, XX from `Fault station origin`;
+     *  - srfst_NAME, one per observation point NAME (where the benchmark
+     *    asks for them): t disp vel, or disp_1 disp_2 vel_1 vel_2;
+     *  - global.dat (where asked for): t max_slip_rate moment_rate (s,
+     *    log10 m/s, N/s per metre along strike: G int V ds);
+     *  - the profiles (slip.dat or BP1's devol.dat; shear_stress.dat and
+     *    normal_stress.dat with a normal coupling or a pore fluid,
+     *    darcy_vel.dat with a Darcy velocity): a row of positions after two
+     *    zeros, then t, max_slip_rate and the values at those positions,
+     *    every `Slip profile interval`, during events every `Event slip
+     *    profile interval`. With `Boundary slip rate`, the load or creep
+     *    node one cell beyond the contact's end is a position too.
      * With `Mirror model` (one side of a fault between two equal bodies
      * computed against a rigid mirror, the SEAS symmetric reduction), the
      * surface stations report the benchmark's side x > 0: half of the
@@ -51,7 +58,7 @@ namespace rsfcycle
         return "SEAS files";
       }
 
-      /** The station and global rows of the step, slip.dat when due. */
+      /** The station and global rows of the step, the profiles when due. */
       void
       write(const Record &record) override;
 
@@ -59,13 +66,16 @@ namespace rsfcycle
       void
       write_headers() override;
 
+      void
+      write_rows(const Record &record) override;
+
       /** The station and global rows of an accepted step. */
       void
-      write_step(double t, const Sample &sample);
+      write_step(double t);
 
-      /** One row of slip.dat (and shear_stress.dat, normal_stress.dat). */
+      /** One row of each profile. */
       void
-      write_profile(double t, const Sample &sample);
+      write_profile(double t);
 
       /** A value at a position: nodes k and k + 1 with weights. */
       struct Interpolation
@@ -82,14 +92,24 @@ namespace rsfcycle
 
       /**
        * Sort the sample's node values by position (slip, rates, stress,
-       * state); returns log10 of the maximum slip rate.
+       * state) and fill in the boundary nodes at time t; returns log10 of
+       * the maximum slip rate over the contact.
        */
       double
-      sort_sample(const Sample &sample);
+      sort_sample(double t, const Sample &sample);
 
-      std::vector<unsigned int>  order;     // nodes by position
-      std::vector<double>        positions; // sorted
-      std::vector<double>        weights;   // sorted like positions
+      /**
+       * The nodes by position; -1: a load or creep node beyond the
+       * contact's end (`Boundary slip rate`).
+       */
+      std::vector<int>    order;
+      std::vector<double> positions; // sorted
+      std::vector<double> weights;   // sorted like positions
+      /** The profile files' fields: name and description with unit. */
+      std::vector<Column> profile_fields;
+      /** The sample being written, and log10 of its largest slip rate. */
+      const Sample              *current        = nullptr;
+      double                     log10_max_rate = 0;
       std::vector<Interpolation> stations, profile;
       std::vector<double>        profile_positions;
       std::vector<std::string>   surface_names;

@@ -38,7 +38,9 @@ namespace rsfcycle
       /** Contact node k: position, lumped weight, normal force. */
       struct NodeInfo
       {
-        Point<dim>              position;
+        Point<dim> position;
+        /** The material of a cell at the node (its shear modulus). */
+        types::material_id      material     = 0;
         double                  weight       = 0;
         double                  normal_force = 0;
         friction::Parameters    params;

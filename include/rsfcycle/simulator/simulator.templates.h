@@ -159,12 +159,23 @@ namespace rsfcycle
   Simulator<State>::start(const bool resume)
   {
     const output::Layout layout = model.layout();
-    loop_state                  = std::make_unique<LoopState>(
+    // the events' moments with the body's shear modulus at each node, or
+    // the SEAS benchmark's (`Output/SEAS/Shear modulus`: the full G of a
+    // model computed against a rigid mirror)
+    std::vector<double> moment_weights;
+    const double        seas_G = parameters.output.seas.enabled() ?
+                                   parameters.output.seas.shear_modulus :
+                                   0.;
+    for (unsigned int k = 0; k < layout.shear_moduli.size(); ++k)
+      moment_weights.push_back(layout.weights[k] *
+                               (seas_G > 0 ? seas_G : layout.shear_moduli[k]));
+    loop_state = std::make_unique<LoopState>(
       output::EventDetector(parameters.output.event_threshold * v0,
                             v0,
                             layout.positions,
                             layout.interpolate_event_times,
-                            parameters.output.event_merge_time));
+                            parameters.output.event_merge_time,
+                            moment_weights));
     LoopState &s = *loop_state;
     s.state      = model.initial_state();
     writers      = output::make_writers(parameters, layout);

@@ -48,6 +48,7 @@ INLINE = re.compile(r"<!--r ([A-Za-z0-9_.-]+):([A-Za-z0-9_.-]+)-->([^<`]*?)"
 BLOCK = re.compile(r"(<!--results ([A-Za-z0-9_.-]+)(?::([A-Za-z0-9_.-]*))?"
                    r"-->\n)(.*?)(<!--/results-->)", re.S)
 SEAS = re.compile(r"(<!--seas-table-->\n)(.*?)(<!--/seas-table-->)", re.S)
+RULES = re.compile(r"(<!--seas-rules-->\n)(.*?)(<!--/seas-rules-->)", re.S)
 # The SEAS problems in benchmark order, and the table's cells
 PROBLEMS = ["bp1-qd", "bp1-fd", "bp2-qd", "bp3-qd", "bp3-fd", "bp4-qd",
             "bp5-qd", "bp5-fd", "bp6-qd-a", "bp6-qd-s", "bp7-qd",
@@ -291,9 +292,18 @@ def process(text, results, where):
                                     f"{MAX_CELL} characters: {cell.strip()}")
         return match.group(1) + table + match.group(3)
 
+    def rules(match):
+        from rsfcycle import seas_rules
+        table = seas_rules.markdown() + "\n"
+        if match.group(2) != table:
+            problems.append(f"{where}: the SEAS file rules differ: the "
+                            "table differs from seas_rules.py")
+        return match.group(1) + table + match.group(3)
+
     text = INLINE.sub(inline, text)
     text = BLOCK.sub(block, text)
     text = SEAS.sub(seas, text)
+    text = RULES.sub(rules, text)
     return text, problems
 
 
@@ -301,7 +311,7 @@ def unquoted_timings(text, where):
     """Durations and ratios in prose that no quote marks (a figure that
     does not come from a results file); fenced code is skipped."""
     problems = []
-    stripped = INLINE.sub("", BLOCK.sub("", SEAS.sub("", text)))
+    stripped = INLINE.sub("", BLOCK.sub("", SEAS.sub("", RULES.sub("", text))))
     fenced = False
     for number, line in enumerate(stripped.split("\n"), start=1):
         if line.lstrip().startswith("```"):

@@ -23,7 +23,7 @@ jobs=${JOBS:-2}
 # (benchmarks/seas-bp5/README.md).
 packages=(libdeal.ii-dev libsuitesparse-dev libhmat-oss-dev libopenblas0-serial
   openmpi-bin cmake g++ make numdiff python3-matplotlib python3-numpy
-  python3-pandas clang-format-14 git gmsh)
+  python3-pandas python3-pytest clang-format-14 git gmsh)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)

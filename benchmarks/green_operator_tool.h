@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The set-up that the Green's-function operator tools share
-// (green-function/okada/operator_response.cc, seas-bp3/operator_loading.cc):
-// the fault of a parameter file, built as a run builds it, on one rank.
+// The set-up that the Green's-function operator tools of the benchmarks
+// share: the fault of a parameter file, built as a run builds it, on one
+// rank. The tools are benchmarks/green-function/okada/operator_response.cc
+// (CMake target okada_operator_response) and
+// benchmarks/seas-bp3/operator_loading.cc (bp3_operator_loading), built on
+// demand (EXCLUDE_FROM_ALL) by the drivers that use them.
 #ifndef rsfcycle_benchmarks_green_operator_tool_h
 #define rsfcycle_benchmarks_green_operator_tool_h
 

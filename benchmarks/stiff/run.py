@@ -1,54 +1,38 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""Stiff / extreme-case matrix of the spring-slider.
+"""Stiff and extreme cases of the spring-slider.
 
 Every case is prm/spring-slider.prm (quasi-dynamic stick-slip block:
 a = 0.01, b = 0.015, mu* = 0.6, V* = 1e-6 m/s, L = 1e-5 m,
 |sigma_n| = 1e6 Pa, k = k_crit / 2 = 2.5e8 Pa/m, eta = 5e6 Pa s/m,
 v0 = 1e-6 m/s, ageing law, delta = epsilon = 1e-5) with one parameter (or
 one coherent group of parameters) pushed to an extreme, run quasi-dynamic
-(Mass = 0) and, where inertia can matter, dynamic (Mass = 1e6 kg/m^2).
-Each case gets its own .prm in runs/ and is run with
-
-    rsfcycle --force runs/<case>.prm
-
-under a wall-clock timeout, one case at a time. Per case the table lists
-the outcome (finished / stopped, with the one-line diagnosis / timeout /
+(Mass = 0) and, where inertia can matter, dynamic (Mass = 1e6 kg/m^2),
+one case at a time under a wall-clock timeout (60 s; 10 s for the
+Runge-Kutta, where a crawling run writes millions of rows). Per case: the
+outcome (finished / stopped, with the one-line diagnosis / timeout /
 crashed), the accepted steps, the smallest and largest step, the wall time
-of the process, and whether any field of time-series.csv (every column,
-every row) is non-finite (nan / inf, or not a number at all). events.csv
-and the "Final:" line are checked too. Writes runs.csv and its table
-runs.md (runs-runge-kutta.* with --integrator runge-kutta).
+of the process and of the time loop, and whether any field of
+time-series.csv, events.csv or the "Final:" line is non-finite.
 
-    /usr/bin/python3 benchmarks/stiff/run.py [path/to/rsfcycle] [case ...]
+Stages (from the repository's root, PYTHONPATH=python /usr/bin/python3
+benchmarks/stiff/run.py STAGE ...):
+
+  list   the cases
+  runs   every case (or the cases named) into WORK; without names it
+         writes runs.csv and its table runs.md (with --integrator
+         runge-kutta: runs-runge-kutta.*); about 15 s of CPU with the
+         implicit step, a few minutes with the Runge-Kutta
 """
 import csv
 import math
 import os
 import re
-import subprocess
-import sys
-import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(os.path.dirname(HERE))
-ARGS = sys.argv[1:]
-TIMEOUT = 60  # wall-clock limit per case [s]
-EXE = (ARGS.pop(0) if ARGS and not ARGS[0].startswith("-") and
-       os.path.isfile(ARGS[0]) else os.path.join(ROOT, "build", "rsfcycle"))
-# --integrator runge-kutta: every case with ARKODE's explicit Dormand-Prince
-# 5(4) on the model's ODE instead of the implicit step (runs-runge-kutta.csv
-# and runs-runge-kutta.md)
-INTEGRATOR = "implicit"
-if "--integrator" in ARGS:
-    i = ARGS.index("--integrator")
-    INTEGRATOR = ARGS[i + 1]
-    del ARGS[i:i + 2]
-ONLY = set(ARGS)  # case names to run (default: all)
-# (an explicit method that crawls writes a row per step: ten seconds show it)
-if INTEGRATOR == "runge-kutta":
-    TIMEOUT = 10
-WORK = os.path.join(HERE, "runs")
+from rsfcycle import bench, prm
+
+NAME = "stiff"
+HERE = bench.folder(NAME)
 DYN_MASS = 1e6  # [kg/m^2] for the dynamic variants
 
 BASE = {
@@ -141,41 +125,33 @@ def matrix():
          k_over_kc=1e-3)
 
 
-def write_prm(name, end, max_step, p):
-    d = os.path.join(WORK, name)
-    prm = os.path.join(WORK, name + ".prm")
-    entries = "\n".join(f"  set {k:<20} = {v:.15g}" if not isinstance(v, str)
-                        else f"  set {k:<20} = {v}" for k, v in p.items())
-    with open(prm, "w") as f:
-        f.write(f"""set Scene            = spring-slider
-set End time         = {end:.15g}
-set Output directory = {d}
-subsection Time stepping
-  set Integrator = {INTEGRATOR}
-  set Controller   = step-doubling
-  set Adaptive     = true
-  set Tolerance    = 1e-5
-  set Initial step = 1e-3
-  set Minimum step = 1e-14
-  set Maximum step = {max_step:.15g}
-end
-subsection Solver
-  set State law                      = ageing
-  set Coupling                       = fixed-point
-  set Fixed-point tolerance          = 1e-5
-  set Maximum fixed-point iterations = 20
-end
-subsection Output
-  set Event threshold   = 10
-  set Progress interval = 1e9
-  set Checkpoint steps  = 0
-  set Checkpoint minutes = 0
-end
-subsection Spring slider
-{entries}
-end
-""")
-    return prm, d
+def write_prm(work, integrator, name, end, max_step, p):
+    """The case's parameter file: prm/spring-slider.prm with the case's
+    end time, maximum step and Spring slider entries."""
+    out = os.path.join(work, name)
+    entries = {"End time": f"{end:.15g}",
+               "Time stepping/Integrator": integrator,
+               "Time stepping/Controller": "step-doubling",
+               "Time stepping/Adaptive": "true",
+               "Time stepping/Tolerance": "1e-5",
+               "Time stepping/Initial step": "1e-3",
+               "Time stepping/Minimum step": "1e-14",
+               "Time stepping/Maximum step": f"{max_step:.15g}",
+               "Solver/State law": "ageing",
+               "Solver/Coupling": "fixed-point",
+               "Solver/Fixed-point tolerance": "1e-5",
+               "Solver/Maximum fixed-point iterations": 20,
+               "Output/Event threshold": 10,
+               "Output/Progress interval": "1e9",
+               "Output/Checkpoint steps": 0,
+               "Output/Checkpoint minutes": 0}
+    entries.update({f"Spring slider/{k}": (v if isinstance(v, str)
+                                           else f"{v:.15g}")
+                    for k, v in p.items()})
+    path = prm.variant(out + ".prm", os.path.join(bench.ROOT, "prm",
+                                                  "spring-slider.prm"),
+                       out, entries)
+    return path, out
 
 
 def nonfinite(path):
@@ -198,25 +174,21 @@ def nonfinite(path):
     return "no"
 
 
-def run(name, what, end, max_step, p):
-    prm, d = write_prm(name, end, max_step, p)
-    t0 = time.monotonic()
-    try:
-        res = subprocess.run(["timeout", "-k", "10", str(TIMEOUT), EXE,
-                              "--force", prm], capture_output=True, text=True)
-        rc, out, err = res.returncode, res.stdout, res.stderr
-    except Exception as e:  # noqa
-        rc, out, err = -999, "", str(e)
-    wall = time.monotonic() - t0
+def run(exe, work, integrator, timeout, name, what, end, max_step, p):
+    """One case under the timeout; its row."""
+    path, d = write_prm(work, integrator, name, end, max_step, p)
+    wall, rc = bench.run([exe, path], d + ".log", timeout=timeout,
+                         check=False)
+    out = bench.text(d + ".log")
     if rc == 0 and "Final:" in out:
         outcome = "finished"
-    elif rc == 124 or rc == 137:
-        outcome = f"timeout ({TIMEOUT} s)"
+    elif rc in (124, 137):
+        outcome = f"timeout ({timeout} s)"
     elif rc < 0 or rc > 128:
         outcome = f"crashed (exit {rc})"
     else:
-        lines = [l.strip() for l in (out + "\n" + err).splitlines()
-                 if re.match(r"(Error:|rsfcycle: error:)", l.strip())]
+        lines = [line.strip() for line in out.splitlines()
+                 if re.match(r"(Error:|rsfcycle: error:)", line.strip())]
         outcome = (f"stopped: {lines[0]}" if lines else
                    f"stopped (exit {rc}, no diagnosis)")
     ts = os.path.join(d, "time-series.csv")
@@ -250,7 +222,8 @@ def run(name, what, end, max_step, p):
     if final and re.search(r"nan|inf", final.group(0), re.I):
         other.append("Final line: " + final.group(0))
     events = len(re.findall(r"event \d+ starts", out))
-    warned = re.search(r"\*\*\* Warning: .*?\(step (\S+) s at t = (\S+) s", out)
+    warned = re.search(r"\*\*\* Warning: .*?\(step (\S+) s at t = (\S+) s",
+                       out)
     if warned:
         outcome += (f"; warned (stability-limited, crawling) at t = "
                     f"{warned.group(2)} s, step {warned.group(1)} s")
@@ -264,25 +237,32 @@ def run(name, what, end, max_step, p):
                 final=final.group(0) if final else "")
 
 
-def main():
-    if "-h" in ARGS or "--help" in ARGS:
-        print(__doc__)
-        return
-    os.makedirs(WORK, exist_ok=True)
+def runs(*case, integrator: ("implicit", "runge-kutta") = "implicit",
+         build="", work=""):
+    """Run the cases into WORK; without names also runs.csv and runs.md.
+
+    case: only these cases (then no tables are written)
+    integrator: the implicit step, or ARKODE's explicit Dormand-Prince 5(4)
+    """
+    exe = bench.executable(build)
+    work = bench.work(work)
+    # an explicit method that crawls writes a row per step: ten seconds
+    # show it
+    timeout = 10 if integrator == "runge-kutta" else 60
     matrix()
     rows = []
     for c in CASES:
-        if ONLY and c[0] not in ONLY:
+        if case and c[0] not in case:
             continue
-        r = run(*c)
+        r = run(exe, work, integrator, timeout, *c)
         rows.append(r)
         print(f"{r['name']:<20} {r['outcome'][:90]:<40} steps {r['steps']:>7}"
               f" h {r['hmin']:.3g}..{r['hmax']:.3g} wall {r['wall']:.2f} s"
               f" fp {r['fp']} events {r['events']} Vmax {r['vmax']} nonfinite "
               f"{r['nonfinite']} {r['other']}", flush=True)
-    if ONLY:
+    if case:
         return
-    suffix = "" if INTEGRATOR == "implicit" else "-" + INTEGRATOR
+    suffix = "" if integrator == "implicit" else "-" + integrator
     with open(os.path.join(HERE, f"runs{suffix}.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["case", "set-up", "end time [s]", "outcome", "steps",
@@ -319,5 +299,12 @@ def main():
     print(table)
 
 
+def list_():
+    """The cases."""
+    matrix()
+    for name, what, end, max_step, p in CASES:
+        print(f"{name:<16} {what} (to {end:g} s)")
+
+
 if __name__ == "__main__":
-    main()
+    raise SystemExit(bench.cli(__doc__, NAME, [list_, runs]))

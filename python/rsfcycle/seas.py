@@ -72,6 +72,25 @@ def read(path):
     return SeasFile(path).rows
 
 
+def table(path):
+    """(field names, rows as a numpy array) of a time series or table
+    (stations, global.dat, catalog.dat, rupture.dat)."""
+    import numpy as np
+    f = SeasFile(path)
+    names = [w for line in f.field_lines for w in line]
+    return names, np.array(f.rows)
+
+
+def profile(path):
+    """(positions, t, log10 max slip rate, values[time, position]) of a
+    profile file (slip.dat, devol.dat, slip_2_strike.dat, ...)."""
+    import numpy as np
+    rows = SeasFile(path).rows
+    positions = np.array(rows[0][2:])
+    data = np.array(rows[1:])
+    return positions, data[:, 0], data[:, 1], data[:, 2:]
+
+
 def _problem_of(run):
     """The problem line of the run folder's SEAS files (the first found)."""
     for path in sorted(glob.glob(os.path.join(run, "*"))):

@@ -43,16 +43,14 @@ main(int argc, char **argv)
       prm.set("Local refinements", std::string(argv[2]));
       prm.leave_subsection();
       const GreenOperatorTool<3> tool(prm, argv[1]);
-      const auto                &scene = tool.scene;
-      const auto                &fault = *tool.fault;
-      const auto                &op    = fault.green_operator();
-      const auto                &nodes = fault.contact_quadrature().nodes();
+      const auto                &op = tool.fault->green_operator();
+      const auto &nodes             = tool.fault->contact_quadrature().nodes();
       if (op.n_contact() != 2 * nodes.size() || op.n_rows() != op.n_contact())
         throw std::runtime_error("expected two tangential dofs per node");
 
       // the mesh's frame (the .prm's x, y, z): a point p of the solver's
       // rotated frame is c + Q p there, its unit vector e_c is Q e_c
-      const auto [Q, c]  = scene->output_frame();
+      const auto [Q, c]  = tool.scene->output_frame();
       const auto in_mesh = [&](const dealii::Point<3> &p) { return c + Q * p; };
       const auto axis    = [&](const unsigned int component) {
         dealii::Tensor<1, 3> e;
@@ -89,8 +87,8 @@ main(int argc, char **argv)
         }
 
       // the observation rows: point by point, the scene's directions
-      const auto points     = scene->observation_points();
-      const auto directions = scene->observation_directions();
+      const auto points     = tool.scene->observation_points();
+      const auto directions = tool.scene->observation_directions();
       if (op.O.m() != points.size() * directions.size())
         throw std::runtime_error("observation rows do not match the points");
       dealii::Vector<double> s(slip.begin(), slip.end()), u(op.O.m());

@@ -24,7 +24,7 @@ PYTHON=${PYTHON:-/usr/bin/python3}
 PATCH="-10000 10000 -14000 -4000"
 
 # die, help_if_asked
-. "$HERE/../../common.sh"
+. "$ROOT/python/rsfcycle/bench.sh"
 
 [ $# -ge 1 ] || die "usage: OKADA_SRC=DIR run.sh OUTDIR [REFINEMENTS...]"
 help_if_asked "$1"

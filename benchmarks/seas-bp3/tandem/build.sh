@@ -18,6 +18,7 @@
 # set (a folder of bare mirrors MIRROR/OWNER+NAME/repo). Writes
 # PREFIX/tandem/build-petsc322/app/tandem. About 25 minutes on 2 cores.
 set -euo pipefail
+case "${1:-}" in -h|--help) sed -n '3,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0;; esac
 PREFIX=${1:-${TANDEM_PREFIX:-}}
 [ -n "$PREFIX" ] || { echo "usage: $0 PREFIX (where tandem, its PETSc and ParMETIS are built; or TANDEM_PREFIX)" >&2; exit 2; }
 TANDEM_COMMIT=b75f66692d299673bf85632ed71e2a7da71ff2e0  # 2026-06-29

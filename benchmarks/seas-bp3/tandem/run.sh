@@ -17,16 +17,21 @@
 #          (OUTDIR/checkpoint, written every 10 CPU minutes; the Green's
 #          functions are read from OUTDIR/gf). The same LF, DIP and SENSE
 #          as the first run; tandem appends to its output files, and
-#          tandem2seas.py keeps the restarted rows where the times overlap.
+#          the conversion keeps the restarted rows where the times overlap.
 # Builds tandem if absent (build.sh), meshes tandem's bp3.geo with gmsh,
-# writes OUTDIR/bp3.toml (tandem_input.py), runs it on one rank with
-# PETSc's own LU (nested dissection; the PETSc of build.sh has no MUMPS) for
-# the Green's functions and RK45 (Dormand-Prince), and converts the output
-# (tandem2seas.py) to global.dat, fltst_dpXXX(.dat) and srfst_fn±08 /
-# srfst_x±08.dat, the files compare.py reads for rsfcycle and HBI.
+# writes OUTDIR/bp3.toml, runs it on one rank with PETSc's own LU (nested
+# dissection; the PETSc of build.sh has no MUMPS) for the Green's functions
+# and RK45 (Dormand-Prince), and converts the output to BP3's files
+# (fltst_dpXXX, srfst_fn+08, srfst_fn-08, global.dat) with the package
+# module rsfcycle.peers.tandem (python/ of this repository), which
+# `benchmarks/seas-bp3/run.py tables` reads beside rsfcycle's and HBI's.
+# benchmarks/seas-bp3/run.py tandem OUTDIR runs this script.
 set -euo pipefail
+case "${1:-}" in -h|--help) sed -n '3,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0;; esac
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-PY=/usr/bin/python3
+ROOT=$(cd "$HERE/../../.." && pwd)
+# the package rsfcycle of this repository
+py() { PYTHONPATH="$ROOT/python${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 "$@"; }
 LF=${LF:-0.1}
 DIP=${DIP:-60}
 SENSE=${SENSE:-thrust}
@@ -54,9 +59,10 @@ else
   (cd "$OUT" && gmsh -2 -setnumber Lf "$LF" -setnumber Ls "$LF" -setnumber dip "$DIP" bp3.geo \
      -o "$MESH" > gmsh.log 2>&1)
 fi
-$PY "$HERE/tandem_input.py" "$OUT" --dip "$DIP" --sense "$SENSE" --mesh "$MESH" \
-  --final-time "$($PY -c "print($TMAX * 3.1536e7)")" "${RESUME_FLAG[@]}" > /dev/null
-echo "== BP3-QD (dip $DIP, $SENSE): tandem $(git -C "$PEERS/tandem/src" rev-parse --short HEAD), Lf $LF km, degree 4, RK atol $RTOL, $TMAX yr -> $OUT"
+py -m rsfcycle.peers.tandem input "$OUT" --dip "$DIP" --sense "$SENSE" --mesh "$MESH" \
+  --final-time "$(py -c "print($TMAX * 3.1536e7)")" "${RESUME_FLAG[@]}" > /dev/null
+VERSION=$(git -C "$PEERS/tandem/src" rev-parse --short HEAD)
+echo "== BP3-QD (dip $DIP, $SENSE): tandem $VERSION, Lf $LF km, degree 4, RK atol $RTOL, $TMAX yr -> $OUT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1
 # GKlib, METIS, ParMETIS and PETSc 3.22 (build.sh)
 export LD_LIBRARY_PATH=$PEERS/tandem-deps/lib:$PEERS/petsc/install/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
@@ -64,4 +70,4 @@ export LD_LIBRARY_PATH=$PEERS/tandem-deps/lib:$PEERS/petsc/install/lib${LD_LIBRA
     -ksp_type preonly -pc_type lu -pc_factor_mat_ordering_type nd \
     -ts_type rk -ts_rk_type 5dp -ts_rtol 1e-50 -ts_atol "$RTOL" -ts_adapt_wnormtype infinity \
     >> log.txt 2>&1 )
-$PY "$HERE/tandem2seas.py" "$OUT"
+py -m rsfcycle.peers.tandem convert "$OUT" --version "$VERSION" --element-size "$LF km elements of degree 4"

@@ -16,7 +16,8 @@ namespace rsfcycle
         "Displacement = antiplane: needs Dimension = 2 and Scene = "
         "mesh-file (this run has Dimension = " +
         std::to_string(run.dimension) + ", Scene = " + run.scene + ")");
-    const auto &ts = time_stepping;
+    const auto &ts   = time_stepping;
+    using Integrator = TimeSteppingParameters::Integrator;
     if (!(ts.minimum_step <= ts.initial_step))
       throw std::invalid_argument(
         "Time stepping/Minimum step = " + format_number(ts.minimum_step) +
@@ -54,16 +55,16 @@ namespace rsfcycle
       throw std::invalid_argument(
         "Solver/Green operator file = " + solver.green_operator_file +
         ": needs Solver/Bulk = green-function");
-    if (green && run.dimension != 2 && ts.integrator == "implicit")
+    if (green && run.dimension != 2 && ts.integrator == Integrator::implicit)
       throw std::invalid_argument(
         bulk + "Time stepping/Integrator = runge-kutta in 3D (the implicit "
                "step on the fault takes one slip component per node, 2D "
                "only)");
-    if (green && ts.integrator == "arkode")
+    if (green && ts.integrator == Integrator::arkode)
       throw std::invalid_argument(
         bulk + "Time stepping/Integrator = runge-kutta or implicit (arkode "
                "samples the run only every Maximum step)");
-    if (!green && ts.integrator == "runge-kutta" &&
+    if (!green && ts.integrator == Integrator::runge_kutta &&
         run.scene != "spring-slider")
       throw std::invalid_argument(
         "Time stepping/Integrator = runge-kutta: needs Solver/Bulk = "

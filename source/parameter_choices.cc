@@ -15,6 +15,11 @@ namespace rsfcycle
                                                          "local-extrapolation"};
   template <>
   const std::vector<std::string>
+    Choice<TimeSteppingParameters::Integrator>::names = {"implicit",
+                                                         "arkode",
+                                                         "runge-kutta"};
+  template <>
+  const std::vector<std::string>
     Choice<TimeSteppingParameters::ErrorNorm>::names = {"L2", "max"};
   template <>
   const std::vector<std::string> Choice<SolverParameters::Coupling>::names =
@@ -67,6 +72,7 @@ namespace rsfcycle
 
   template struct Choice<MeshParameters::RefinementLaw>;
   template struct Choice<TimeSteppingParameters::Controller>;
+  template struct Choice<TimeSteppingParameters::Integrator>;
   template struct Choice<TimeSteppingParameters::ErrorNorm>;
   template struct Choice<SolverParameters::Coupling>;
   template struct Choice<SolverParameters::Dynamics>;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/base/utilities.h>
 #include <rsfcycle/format.h>
 #include <rsfcycle/friction/laws.h>
 #include <rsfcycle/parameters.h>
@@ -135,14 +136,13 @@ namespace rsfcycle
 
 
   void
-  TimeSteppingParameters::declare_parameters(ParameterHandler  &prm,
-                                             const std::string &integrators)
+  TimeSteppingParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
     prm.declare_entry(
       "Integrator",
       "implicit",
-      Selection(integrators),
+      Selection(Choice<Integrator>::pattern()),
       "How the model is advanced in time. implicit: the model's implicit "
       "step (Solver/Time scheme, with the rate/state coupling of "
       "Solver/Coupling), its step sizes chosen by Controller; arkode: "
@@ -235,7 +235,7 @@ namespace rsfcycle
   TimeSteppingParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    integrator         = prm.get("Integrator");
+    integrator         = Choice<Integrator>::parse(prm.get("Integrator"));
     adaptive           = prm.get_bool("Adaptive");
     controller         = Choice<Controller>::parse(prm.get("Controller"));
     extrapolated_start = prm.get_bool("Extrapolated start");
@@ -469,7 +469,8 @@ namespace rsfcycle
 
 
   void
-  OutputParameters::declare_parameters(ParameterHandler &prm)
+  OutputParameters::declare_parameters(ParameterHandler  &prm,
+                                       const std::string &writers)
   {
     prm.enter_subsection("Output");
     prm.declare_entry("Output interval",
@@ -506,7 +507,19 @@ namespace rsfcycle
                       "10",
                       Double(0),
                       "Wall-clock time between progress lines [s]");
-    prm.declare_entry("Write VTU", "true", Bool(), "Write VTU/PVD snapshots");
+    prm.declare_entry(
+      "Writers",
+      "time series, base profile, events, vtu",
+      dealii::Patterns::MultipleSelection(writers),
+      "The outputs of the run, a comma-separated list (doc/output.md). time "
+      "series: time-series.csv, a row per accepted step; base profile: "
+      "base-profile.csv, the contact's slip rates; events: events.csv and "
+      "summary.txt; seas: the SEAS files of Output/SEAS (needs its "
+      "Benchmark or Problem); vtu: VTU snapshots of the body and the fault "
+      "(solution.pvd, fault.pvd) every Output interval; hdf5: the same "
+      "snapshots as HDF5 with XDMF indices (solution.xdmf, fault.xdmf), one "
+      "file per snapshot for any number of ranks. vtu and hdf5 need a body "
+      "on a mesh (not the spring-slider)");
     prm.declare_entry("Transition time",
                       "0",
                       Double(0),
@@ -544,11 +557,11 @@ namespace rsfcycle
     event_threshold        = prm.get_double("Event threshold");
     event_merge_time       = prm.get_double("Event merge time");
     progress_interval      = prm.get_double("Progress interval");
-    write_vtu              = prm.get_bool("Write VTU");
-    transition_time        = prm.get_double("Transition time");
-    transition_events      = prm.get_integer("Transition events");
-    checkpoint_steps       = prm.get_integer("Checkpoint steps");
-    checkpoint_minutes     = prm.get_double("Checkpoint minutes");
+    writers         = dealii::Utilities::split_string_list(prm.get("Writers"));
+    transition_time = prm.get_double("Transition time");
+    transition_events  = prm.get_integer("Transition events");
+    checkpoint_steps   = prm.get_integer("Checkpoint steps");
+    checkpoint_minutes = prm.get_double("Checkpoint minutes");
     seas.parse_parameters(prm);
     prm.leave_subsection();
   }
@@ -557,14 +570,14 @@ namespace rsfcycle
   void
   Parameters::declare_parameters(ParameterHandler  &prm,
                                  const std::string &scene_names,
-                                 const std::string &integrator_names,
-                                 const std::string &scheme_names)
+                                 const std::string &scheme_names,
+                                 const std::string &writer_names)
   {
     RunParameters::declare_parameters(prm, scene_names);
     MeshParameters::declare_parameters(prm);
-    TimeSteppingParameters::declare_parameters(prm, integrator_names);
+    TimeSteppingParameters::declare_parameters(prm);
     SolverParameters::declare_parameters(prm, scheme_names);
-    OutputParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm, writer_names);
   }
 
   void

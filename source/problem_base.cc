@@ -467,10 +467,9 @@ namespace rsfcycle
 
 
   template <int dim>
-  std::vector<std::unique_ptr<output::Writer>>
-  ProblemBase<dim>::writers()
+  output::Offer
+  ProblemBase<dim>::offer()
   {
-    std::vector<std::unique_ptr<output::Writer>> list;
     // a split fault: the fault's slip and slip rate from the tied unknowns,
     // the body's displacement and velocity untied (both sides)
     std::function<BodyState(const output::Record &)> body;
@@ -489,18 +488,17 @@ namespace rsfcycle
           }
         return state;
       };
-    if (parameters.output.write_vtu)
-      list.push_back(std::make_unique<output::SnapshotWriter<dim>>(
-        parameters.run.output_directory,
-        discretisation,
-        contact,
-        *parameters.solver.law,
-        scene.convergence_rate(),
-        scene.output_frame(),
-        parameters.output,
-        timer,
-        body));
-    return list;
+    output::Offer offer;
+    offer.model = "the volume method";
+    offer.fields.push_back(output::Field::body);
+    offer.body = output::BodySource<dim>{&discretisation,
+                                         &contact,
+                                         parameters.solver.law.get(),
+                                         scene.convergence_rate(),
+                                         scene.output_frame(),
+                                         &timer,
+                                         body};
+    return offer;
   }
 
 

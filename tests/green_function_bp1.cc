@@ -51,26 +51,27 @@ namespace
     dealii::ParameterHandler prm;
     scenes::declare_parameters(prm);
     prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
-    prm.parse_input_from_string("set Output directory = " + dir +
-                                "\n"
-                                "set Overwrite output = true\n"
-                                "set Stop after events = 1\n"
-                                "subsection Mesh file\n"
-                                "  set File = " +
-                                source +
-                                "/../prm/meshes/seas-bp1.msh\n"
-                                "end\n"
-                                "subsection Mesh\n"
-                                "  set Local refinements = 3\n"
-                                "end\n"
-                                "subsection Output\n"
-                                "  set Write VTU = false\n"
-                                "  set Progress interval = 1e9\n"
-                                "  subsection SEAS\n"
-                                "    set Benchmark = none\n"
-                                "  end\n"
-                                "end\n" +
-                                settings);
+    prm.parse_input_from_string(
+      "set Output directory = " + dir +
+      "\n"
+      "set Overwrite output = true\n"
+      "set Stop after events = 1\n"
+      "subsection Mesh file\n"
+      "  set File = " +
+      source +
+      "/../prm/meshes/seas-bp1.msh\n"
+      "end\n"
+      "subsection Mesh\n"
+      "  set Local refinements = 3\n"
+      "end\n"
+      "subsection Output\n"
+      "  set Writers = time series, base profile, events\n"
+      "  set Progress interval = 1e9\n"
+      "  subsection SEAS\n"
+      "    set Benchmark = none\n"
+      "  end\n"
+      "end\n" +
+      settings);
     run_model<2>(prm);
     Result result;
     result.events     = read_csv(dir + "/events.csv");

@@ -71,34 +71,35 @@ namespace
     dealii::ParameterHandler prm;
     scenes::declare_parameters(prm);
     prm.parse_input(source + base);
-    prm.parse_input_from_string("set Output directory = " + dir +
-                                "\n"
-                                "set Overwrite output = true\n"
-                                "subsection Time stepping\n"
-                                "  set Integrator = runge-kutta\n"
-                                "  set Tolerance = 1e-7\n"
-                                "end\n"
-                                "subsection Solver\n"
-                                "  set Bulk = green-function\n"
-                                "end\n"
-                                "subsection Output\n"
-                                "  set Write VTU = false\n"
-                                "  set Progress interval = 1e9\n"
-                                "end\n" +
-                                (dim == 2 ? "set End time = 6.1e9\n"
-                                            "subsection Mesh\n"
-                                            "  set Local refinements = 3\n"
-                                            "end\n"
-                                            "subsection Output\n"
-                                            "  subsection SEAS\n"
-                                            "    set Benchmark = none\n"
-                                            "  end\n"
-                                            "end\n" :
-                                            "subsection Time stepping\n"
-                                            "  set Initial step = 1e5\n"
-                                            "  set Maximum step = 3.15576e7\n"
-                                            "end\n") +
-                                settings);
+    prm.parse_input_from_string(
+      "set Output directory = " + dir +
+      "\n"
+      "set Overwrite output = true\n"
+      "subsection Time stepping\n"
+      "  set Integrator = runge-kutta\n"
+      "  set Tolerance = 1e-7\n"
+      "end\n"
+      "subsection Solver\n"
+      "  set Bulk = green-function\n"
+      "end\n"
+      "subsection Output\n"
+      "  set Writers = time series, base profile, events\n"
+      "  set Progress interval = 1e9\n"
+      "end\n" +
+      (dim == 2 ? "set End time = 6.1e9\n"
+                  "subsection Mesh\n"
+                  "  set Local refinements = 3\n"
+                  "end\n"
+                  "subsection Output\n"
+                  "  subsection SEAS\n"
+                  "    set Benchmark = none\n"
+                  "  end\n"
+                  "end\n" :
+                  "subsection Time stepping\n"
+                  "  set Initial step = 1e5\n"
+                  "  set Maximum step = 3.15576e7\n"
+                  "end\n") +
+      settings);
     run_model<dim>(prm);
     return {read_csv(dir + "/events.csv"), read_csv(dir + "/time-series.csv")};
   }

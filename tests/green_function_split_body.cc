@@ -47,14 +47,15 @@ main(int argc, char **argv)
   dealii::ParameterHandler prm;
   scenes::declare_parameters(prm);
   scenes::parse_parameter_file(prm, source + "/../prm/seas-bp3-qd.prm");
-  prm.parse_input_from_string("set Output directory = output-split-body\n"
-                              "subsection Mesh\n"
-                              "  set Global refinements = 0\n"
-                              "  set Local refinements = 2\n"
-                              "end\n"
-                              "subsection Output\n"
-                              "  set Write VTU = true\n"
-                              "end\n");
+  prm.parse_input_from_string(
+    "set Output directory = output-split-body\n"
+    "subsection Mesh\n"
+    "  set Global refinements = 0\n"
+    "  set Local refinements = 2\n"
+    "end\n"
+    "subsection Output\n"
+    "  set Writers = time series, base profile, events, seas, vtu\n"
+    "end\n");
   Parameters parameters;
   parameters.parse_parameters(prm);
   const auto            scene = scenes::make_scene<2>("mesh-file", prm);

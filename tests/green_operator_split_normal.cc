@@ -91,7 +91,7 @@ main(int argc, char **argv)
     "  set Integrator = runge-kutta\n"
     "end\n"
     "subsection Output\n"
-    "  set Write VTU = false\n"
+    "  set Writers = time series, base profile, events\n"
     "end\n"
     "subsection Solver\n"
     "  set Dynamics = quasi-dynamic\n"

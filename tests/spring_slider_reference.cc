@@ -33,34 +33,36 @@ namespace
     tol << tolerance;
     ParameterHandler prm;
     scenes::declare_parameters(prm);
-    prm.parse_input_from_string("set Scene = spring-slider\n"
-                                "set End time = 1000\n"
-                                "set Output directory = " +
-                                dir +
-                                "\n"
-                                "subsection Time stepping\n"
-                                "  set Integrator = " +
-                                integrator +
-                                "\n"
-                                "  set Controller = step-doubling\n"
-                                "  set Tolerance = " +
-                                tol.str() +
-                                "\n"
-                                "  set Initial step = 1e-3\n"
-                                "  set Minimum step = 1e-14\n"
-                                "  set Maximum step = 10\n"
-                                "end\n"
-                                "subsection Solver\n"
-                                "  set Fixed-point tolerance = " +
-                                tol.str() +
-                                "\n"
-                                "end\n"
-                                "subsection Output\n"
-                                "  set Progress interval = 1e9\n"
-                                "end\n"
-                                "subsection Spring slider\n"
-                                "  set Reference output period = 1\n"
-                                "end\n");
+    prm.parse_input_from_string(
+      "set Scene = spring-slider\n"
+      "set End time = 1000\n"
+      "set Output directory = " +
+      dir +
+      "\n"
+      "subsection Time stepping\n"
+      "  set Integrator = " +
+      integrator +
+      "\n"
+      "  set Controller = step-doubling\n"
+      "  set Tolerance = " +
+      tol.str() +
+      "\n"
+      "  set Initial step = 1e-3\n"
+      "  set Minimum step = 1e-14\n"
+      "  set Maximum step = 10\n"
+      "end\n"
+      "subsection Solver\n"
+      "  set Fixed-point tolerance = " +
+      tol.str() +
+      "\n"
+      "end\n"
+      "subsection Output\n"
+      "  set Writers = time series, base profile, events\n"
+      "  set Progress interval = 1e9\n"
+      "end\n"
+      "subsection Spring slider\n"
+      "  set Reference output period = 1\n"
+      "end\n");
     Parameters parameters;
     parameters.parse_parameters(prm);
     models::SpringSlider slider(parameters, prm);

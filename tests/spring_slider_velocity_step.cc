@@ -40,34 +40,36 @@ main()
     {
       ParameterHandler prm;
       scenes::declare_parameters(prm);
-      prm.parse_input_from_string("set Scene = spring-slider\n"
-                                  "set End time = 21\n"
-                                  "set Output directory = output-" +
-                                  law +
-                                  "\n"
-                                  "subsection Time stepping\n"
-                                  "  set Controller = step-doubling\n"
-                                  "  set Tolerance = 1e-6\n"
-                                  "  set Initial step = 1e-5\n"
-                                  "  set Maximum step = 1e-4\n"
-                                  "end\n"
-                                  "subsection Solver\n"
-                                  "  set State law = " +
-                                  law +
-                                  "\n"
-                                  "  set Fixed-point tolerance = 1e-8\n"
-                                  "end\n"
-                                  "subsection Output\n"
-                                  "  set Progress interval = 1e9\n"
-                                  "end\n"
-                                  "subsection Spring slider\n"
-                                  "  set Stiffness = 1e12\n"
-                                  "  set Radiation damping = 0\n"
-                                  "  set Initial slip rate = 1e-6\n"
-                                  "  set Initial state = 0\n"
-                                  "  set Velocity step time = 1\n"
-                                  "  set Velocity step factor = 10\n"
-                                  "end\n");
+      prm.parse_input_from_string(
+        "set Scene = spring-slider\n"
+        "set End time = 21\n"
+        "set Output directory = output-" +
+        law +
+        "\n"
+        "subsection Time stepping\n"
+        "  set Controller = step-doubling\n"
+        "  set Tolerance = 1e-6\n"
+        "  set Initial step = 1e-5\n"
+        "  set Maximum step = 1e-4\n"
+        "end\n"
+        "subsection Solver\n"
+        "  set State law = " +
+        law +
+        "\n"
+        "  set Fixed-point tolerance = 1e-8\n"
+        "end\n"
+        "subsection Output\n"
+        "  set Writers = time series, base profile, events\n"
+        "  set Progress interval = 1e9\n"
+        "end\n"
+        "subsection Spring slider\n"
+        "  set Stiffness = 1e12\n"
+        "  set Radiation damping = 0\n"
+        "  set Initial slip rate = 1e-6\n"
+        "  set Initial state = 0\n"
+        "  set Velocity step time = 1\n"
+        "  set Velocity step factor = 10\n"
+        "end\n");
       Parameters parameters;
       parameters.parse_parameters(prm);
       models::SpringSlider slider(parameters, prm);

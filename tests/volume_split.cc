@@ -63,35 +63,35 @@ namespace
     dealii::ParameterHandler prm;
     scenes::declare_parameters(prm);
     prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
-    prm.parse_input_from_string("set Output directory = " + dir +
-                                "\n"
-                                "set Overwrite output = true\n"
-                                "set End time = " +
-                                std::string(on_ranks() ? "5e7" : "1e9") +
-                                "\n"
-                                "subsection Mesh\n"
-                                "  set Local refinements = 2\n"
-                                "end\n"
-                                "subsection Time stepping\n"
-                                "  set Integrator = implicit\n"
-                                "  set Tolerance = 1e-6\n"
-                                "end\n"
-                                "subsection Solver\n"
-                                "  set Bulk = volume\n" +
-                                (on_ranks() ?
-                                   "  set Linear correction = amg\n"
-                                   "  set Linear correction cycles = 20\n" :
-                                   "  set Linear correction = direct\n") +
-                                "  set TNNMG tolerance = 1e-11\n"
-                                "end\n"
-                                "subsection Output\n"
-                                "  set Write VTU = false\n"
-                                "  set Progress interval = 1e9\n"
-                                "  subsection SEAS\n"
-                                "    set Benchmark = none\n"
-                                "  end\n"
-                                "end\n" +
-                                settings);
+    prm.parse_input_from_string(
+      "set Output directory = " + dir +
+      "\n"
+      "set Overwrite output = true\n"
+      "set End time = " +
+      std::string(on_ranks() ? "5e7" : "1e9") +
+      "\n"
+      "subsection Mesh\n"
+      "  set Local refinements = 2\n"
+      "end\n"
+      "subsection Time stepping\n"
+      "  set Integrator = implicit\n"
+      "  set Tolerance = 1e-6\n"
+      "end\n"
+      "subsection Solver\n"
+      "  set Bulk = volume\n" +
+      (on_ranks() ? "  set Linear correction = amg\n"
+                    "  set Linear correction cycles = 20\n" :
+                    "  set Linear correction = direct\n") +
+      "  set TNNMG tolerance = 1e-11\n"
+      "end\n"
+      "subsection Output\n"
+      "  set Writers = time series, base profile, events\n"
+      "  set Progress interval = 1e9\n"
+      "  subsection SEAS\n"
+      "    set Benchmark = none\n"
+      "  end\n"
+      "end\n" +
+      settings);
     run_model<2>(prm);
     return {read_csv(dir + "/time-series.csv")};
   }

@@ -354,7 +354,7 @@ def runs_3d(build="", work=""):
     entries = {"Stop after events": 13, "Time stepping/Tolerance": "1e-4",
                "Solver/Fixed-point tolerance": "1e-4",
                "Solver/TNNMG tolerance": "1e-5",
-               "Output/Write VTU": "false"}
+               "Output/Writers": "time series, base profile, events"}
     for name, ranks in (("wedge-3d-paper", 2), ("wedge-3d", 1)):
         out = os.path.join(work, name)
         path = prm.variant(out + ".prm", os.path.join(bench.ROOT, "prm",

@@ -61,7 +61,7 @@ VOLUME = {"Time stepping/Integrator": "implicit", "Solver/Bulk": "volume"}
 def bp1(path, out, levels, entries):
     """A BP1-QD variant at Local refinements `levels`, no VTU."""
     settings = {"Mesh file/File": MESH, "Mesh/Local refinements": levels,
-                "Output/Write VTU": "false"}
+                "Output/Writers": "time series, base profile, events"}
     settings.update(entries)
     return prm.variant(path, BP1, out, settings)
 

@@ -239,7 +239,7 @@ def run_variant(exe, work, name, base, entries, rerun=False):
     out = os.path.join(work, name)
     if finished(out) and not rerun:
         return
-    settings = {"End time": f"{T_END:g}", "Output/Write VTU": "false"}
+    settings = {"End time": f"{T_END:g}", "Output/Writers": "time series, base profile, events"}
     settings.update(entries)
     path = prm.variant(os.path.join(work, "prm", name + ".prm"),
                        os.path.join(bench.ROOT, "prm", BASE[base]), out,
@@ -395,7 +395,7 @@ def runs(only="", rerun=False, build="", work=""):
             run_variant(exe, work, name, base, entries, rerun)
     if not only or "default-vtu" in only:
         run_variant(exe, work, "default-vtu", "wedge", {
-            "End time": 720, "Output/Write VTU": "true",
+            "End time": 720, "Output/Writers": "time series, base profile, events, vtu",
             "Output/Output interval": 20,
             "Output/Event output interval": 20}, rerun)
     table(True, work)
@@ -551,8 +551,8 @@ def snapshots(folder):
     """The VTU snapshots of a run folder, in order."""
     where = os.path.join(folder, "solution")
     if not os.path.isdir(where):
-        bench.die(f"{where}: no snapshots (a run with Output/Write VTU = "
-                  "true, e.g. the stage runs' default-vtu)")
+        bench.die(f"{where}: no snapshots (a run with vtu in Output/Writers, "
+                  "e.g. the stage runs' default-vtu)")
     return [os.path.join(where, f) for f in sorted(os.listdir(where))
             if f.endswith(".vtu")]
 

@@ -74,7 +74,7 @@ def one_run(exe, case, ranks, end, work):
     """One run of a part on `ranks` ranks; its row of runs.csv."""
     out = os.path.join(work, f"{case}-{ranks}")
     base, entries = PARTS[case]
-    settings = {"End time": end, "Output/Write VTU": "false",
+    settings = {"End time": end, "Output/Writers": "time series, base profile, events",
                 "Output/Progress interval": "1e9",
                 "Output/Checkpoint minutes": "1e6"}
     settings.update(entries)

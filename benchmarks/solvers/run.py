@@ -234,7 +234,7 @@ def paper_run(build="", work=""):
             "Time stepping/Tolerance": "1e-5",
             "Solver/Fixed-point tolerance": "1e-5",
             "Solver/Linear correction": "multigrid",
-            "Output/Write VTU": "false"})
+            "Output/Writers": "time series, base profile, events"})
     wall = bench.rsfcycle(exe, [path], out + ".log")
     stats = events.cycles(out)
     print(f"{out}: {wall:.0f} s, {stats['cycles']} cycles, fixed-point "

@@ -353,7 +353,7 @@ def galpha(build="", work=""):
         for label_, extra in (("theta", {}), ("galpha", scheme)):
             out = os.path.join(work, f"galpha-{case}-{label_}")
             settings = dict(entries, **extra)
-            settings["Output/Write VTU"] = "false"
+            settings["Output/Writers"] = "time series, base profile, events"
             path = prm.variant(out + ".prm", os.path.join(bench.ROOT, "prm",
                                                           base),
                                out, settings)

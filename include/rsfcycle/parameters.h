@@ -108,11 +108,21 @@ namespace rsfcycle
       max
     };
 
-    /** The integrator's name; time/integrators.h makes it. */
-    std::string integrator         = "implicit";
-    bool        adaptive           = true;
-    Controller  controller         = Controller::local_extrapolation;
-    bool        extrapolated_start = true;
+    /** How the model is advanced; time/integrators.h makes it. */
+    enum class Integrator
+    {
+      /** the model's implicit step, its sizes chosen by the Controller */
+      implicit,
+      /** SUNDIALS ARKODE on the model's ODE */
+      arkode,
+      /** ARKODE's explicit Dormand-Prince 5(4) on the model's ODE */
+      runge_kutta
+    };
+
+    Integrator integrator         = Integrator::implicit;
+    bool       adaptive           = true;
+    Controller controller         = Controller::local_extrapolation;
+    bool       extrapolated_start = true;
     /** Step sizes = ladder (true) or free (false). */
     bool      ladder             = true;
     double    doubling_threshold = 1;
@@ -122,9 +132,8 @@ namespace rsfcycle
     double    minimum_step       = 1e-9;
     double    maximum_step       = 100;
 
-    /** `Integrator` is declared with the names of time/integrators.h. */
     static void
-    declare_parameters(ParameterHandler &prm, const std::string &integrators);
+    declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
   };
@@ -211,23 +220,28 @@ namespace rsfcycle
   /** Subsection "Output": snapshots, profiles, events, progress. */
   struct OutputParameters
   {
-    double       output_interval        = 10;
-    double       event_output_interval  = 0.1;
-    double       profile_interval       = 1;
-    double       event_profile_interval = 0.005;
-    double       event_threshold        = 10;
-    double       event_merge_time       = 0;
-    double       progress_interval      = 10;
-    bool         write_vtu              = true;
-    double       transition_time        = 0;
-    unsigned int transition_events      = 2;
-    unsigned int checkpoint_steps       = 5000;
-    double       checkpoint_minutes     = 10;
+    double output_interval        = 10;
+    double event_output_interval  = 0.1;
+    double profile_interval       = 1;
+    double event_profile_interval = 0.005;
+    double event_threshold        = 10;
+    double event_merge_time       = 0;
+    double progress_interval      = 10;
+    /** The outputs of a run by name (output/writers.h). */
+    std::vector<std::string> writers            = {"time series",
+                                                   "base profile",
+                                                   "events",
+                                                   "vtu"};
+    double                   transition_time    = 0;
+    unsigned int             transition_events  = 2;
+    unsigned int             checkpoint_steps   = 5000;
+    double                   checkpoint_minutes = 10;
     /** The subsection Output/SEAS. */
     SeasParameters seas;
 
+    /** `Writers` is declared with the names of output/writers.h. */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, const std::string &writers);
     void
     parse_parameters(ParameterHandler &prm);
   };
@@ -249,8 +263,8 @@ namespace rsfcycle
     static void
     declare_parameters(ParameterHandler  &prm,
                        const std::string &scene_names,
-                       const std::string &integrator_names,
-                       const std::string &scheme_names);
+                       const std::string &scheme_names,
+                       const std::string &writer_names);
     void
     parse_parameters(ParameterHandler &prm);
 

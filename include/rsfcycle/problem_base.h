@@ -39,8 +39,8 @@ namespace rsfcycle
    *    coupling (time/implicit_step.h);
    *  - the ParameterHandler-driven time loop, through run(): it hands itself
    *    to the Simulator (simulator/simulator.h), which builds the
-   *    integrator and the writers (besides the generic ones, the VTU
-   *    snapshots of output/snapshots.h that writers() gives) from the
+   *    integrator and the writers of `Output/Writers` (the snapshots of
+   *    output/snapshots.h from the body that offer() gives) from the
    *    parameters.
    * To the simulator it is a time::Model of BodyState whose steps are
    * implicit (time::ImplicitModel).
@@ -141,9 +141,9 @@ namespace rsfcycle
     /** The scene, mesh and solver lines of the log (read by test digests). */
     void
     describe(std::ostream &log) const override;
-    /** The VTU snapshots (with `Output/Write VTU`). */
-    std::vector<std::unique_ptr<output::Writer>>
-    writers() override;
+    /** The body for the snapshots of `Output/Writers` (vtu, hdf5). */
+    output::Offer
+    offer() override;
     solvers::StepStatistics
     take_work() override;
     std::string

@@ -298,7 +298,7 @@ def wedge_variant(path, out, depth, end, entries=None, pinned=True):
     value). Returns the path."""
     settings = {"End time": end, "Mesh/Global refinements": 2,
                 "Mesh/Local refinements": depth,
-                "Output/Write VTU": "false",
+                "Output/Writers": "time series, base profile, events",
                 "Output/Progress interval": "1e9",
                 "Output/Checkpoint minutes": "1e6"}
     settings.update(entries or {})

@@ -93,25 +93,23 @@ namespace rsfcycle
 
 
     template <int dim>
-    std::vector<std::unique_ptr<output::Writer>>
-    GreenFault<dim>::writers()
+    output::Offer
+    GreenFault<dim>::offer()
     {
-      std::vector<std::unique_ptr<output::Writer>> list;
-      if (!parameters.output.write_vtu)
-        return list;
-      list.push_back(std::make_unique<output::SnapshotWriter<dim>>(
-        parameters.run.output_directory,
-        discretisation,
-        contact,
-        *parameters.solver.law,
-        scene.convergence_rate(),
-        scene.output_frame(),
-        parameters.output,
-        timer,
-        [this](const output::Record &record) {
-          return body(record.state_as<State>());
-        }));
-      return list;
+      output::Offer offer;
+      offer.model = "the Green's-function method";
+      offer.fields.push_back(output::Field::body);
+      offer.body =
+        output::BodySource<dim>{&discretisation,
+                                &contact,
+                                parameters.solver.law.get(),
+                                scene.convergence_rate(),
+                                scene.output_frame(),
+                                &timer,
+                                [this](const output::Record &record) {
+                                  return body(record.state_as<State>());
+                                }};
+      return offer;
     }
 
 
@@ -282,7 +280,8 @@ namespace rsfcycle
       log << " (set-up " << format_number(setup_seconds) << " s)\n"
           << "Solver: " << parameters.solver.law->name() << " law, "
           << name_of(parameters.solver.dynamics);
-      if (parameters.time_stepping.integrator == "implicit")
+      if (parameters.time_stepping.integrator ==
+          TimeSteppingParameters::Integrator::implicit)
         log << ", the implicit step on the fault: " << scheme->describe()
             << ", " << name_of(parameters.solver.coupling)
             << " coupling (tolerance "
@@ -302,8 +301,8 @@ namespace rsfcycle
     GreenFault<2>::layout() const;
     template output::Sample
     GreenFault<2>::sample(const State &) const;
-    template std::vector<std::unique_ptr<output::Writer>>
-    GreenFault<2>::writers();
+    template output::Offer
+    GreenFault<2>::offer();
     template BodyState
     GreenFault<2>::body(const State &) const;
     template void
@@ -312,8 +311,8 @@ namespace rsfcycle
     GreenFault<3>::layout() const;
     template output::Sample
     GreenFault<3>::sample(const State &) const;
-    template std::vector<std::unique_ptr<output::Writer>>
-    GreenFault<3>::writers();
+    template output::Offer
+    GreenFault<3>::offer();
     template BodyState
     GreenFault<3>::body(const State &) const;
     template void

@@ -323,7 +323,7 @@ namespace rsfcycle
     {
       log << "Scene: spring-slider ("
           << (mass > 0 ? "dynamic" : "quasi-dynamic") << "), integrator "
-          << parameters.time_stepping.integrator << "\n"
+          << name_of(parameters.time_stepping.integrator) << "\n"
           << "Stiffness k / k_crit = " << stiffness / critical_stiffness()
           << " (k_crit = (b - a) |sigma_n| / L = " << critical_stiffness()
           << " Pa/m)\n"

@@ -120,7 +120,7 @@ namespace rsfcycle
         }
       };
 
-      /** The base fields in the order of SnapshotWriter::base_fields(). */
+      /** The base fields in the order of Snapshots::base_fields(). */
       enum Field
       {
         slip_rate,
@@ -137,43 +137,30 @@ namespace rsfcycle
 
 
     template <int dim>
-    SnapshotWriter<dim>::SnapshotWriter(
-      const std::string                           &dir,
-      const physics::Discretisation<dim>          &discretisation,
-      const physics::ContactQuadrature<dim>       &contact,
-      const friction::Law                         &law,
-      const double                                 convergence_rate,
-      const std::pair<Tensor<2, dim>, Point<dim>> &frame,
-      const OutputParameters                      &output,
-      TimerOutput                                 &timer,
-      std::function<BodyState(const Record &)>     body)
+    Snapshots<dim>::Snapshots(const std::string      &dir,
+                              const BodySource<dim>  &source,
+                              const OutputParameters &output)
       : dir(dir)
-      , discretisation(discretisation)
-      , contact(contact)
-      , law(law)
-      , v0(convergence_rate)
-      , frame(frame)
+      , source(source)
       , interval(output.output_interval)
       , event_interval(output.event_output_interval)
-      , timer(timer)
-      , body(std::move(body))
     {}
 
 
     template <int dim>
     const BodyState &
-    SnapshotWriter<dim>::body_of(const Record &record)
+    Snapshots<dim>::body_of(const Record &record)
     {
-      if (!body)
+      if (!source.body)
         return record.state_as<BodyState>();
-      made = body(record);
+      made = source.body(record);
       return made;
     }
 
 
     template <int dim>
     void
-    SnapshotWriter<dim>::start(const Record &record)
+    Snapshots<dim>::start(const Record &record)
     {
       write_snapshot(body_of(record), record.t);
     }
@@ -181,7 +168,7 @@ namespace rsfcycle
 
     template <int dim>
     void
-    SnapshotWriter<dim>::write(const Record &record)
+    Snapshots<dim>::write(const Record &record)
     {
       const double eps = 1e-12 * std::max(1., record.t);
       if (record.t >=
@@ -196,7 +183,7 @@ namespace rsfcycle
 
     template <int dim>
     void
-    SnapshotWriter<dim>::finish(const Record &record)
+    Snapshots<dim>::finish(const Record &record)
     {
       if (last_time() < record.t)
         write_snapshot(body_of(record), record.t);
@@ -205,24 +192,47 @@ namespace rsfcycle
 
     template <int dim>
     void
-    SnapshotWriter<dim>::save(boost::archive::binary_oarchive &archive) const
+    Snapshots<dim>::save(boost::archive::binary_oarchive &archive) const
     {
-      archive << n_snapshots << records << fault_records << last_output;
+      archive << n_snapshots << last_output;
+      save_records(archive);
     }
 
 
     template <int dim>
     void
-    SnapshotWriter<dim>::load(boost::archive::binary_iarchive &archive)
+    Snapshots<dim>::load(boost::archive::binary_iarchive &archive)
     {
-      archive >> n_snapshots >> records >> fault_records >> last_output;
+      archive >> n_snapshots >> last_output;
+      load_records(archive);
+    }
+
+
+    template <int dim>
+    void
+    VtuSnapshots<dim>::save_records(
+      boost::archive::binary_oarchive &archive) const
+    {
+      archive << records << fault_records;
+    }
+
+
+    template <int dim>
+    void
+    VtuSnapshots<dim>::load_records(boost::archive::binary_iarchive &archive)
+    {
+      archive >> records >> fault_records;
     }
 
 
     template <int dim>
     std::vector<la::Vector>
-    SnapshotWriter<dim>::base_fields(const BodyState &state) const
+    Snapshots<dim>::base_fields(const BodyState &state) const
     {
+      const auto             &discretisation = *source.discretisation;
+      const auto             &contact        = *source.contact;
+      const auto             &law            = *source.law;
+      const double            v0             = source.convergence_rate;
       std::vector<la::Vector> field(
         n_fields, la::Vector(discretisation.scalar_partitioner));
       field[log_slip_rate]            = std::log10(1e-20);
@@ -271,8 +281,16 @@ namespace rsfcycle
 
 
     template <int dim>
+    MPI_Comm
+    Snapshots<dim>::communicator() const
+    {
+      return source.discretisation->triangulation.get_communicator();
+    }
+
+
+    template <int dim>
     std::string
-    SnapshotWriter<dim>::in_folder(const std::string &name) const
+    Snapshots<dim>::in_folder(const std::string &name) const
     {
       const std::filesystem::path path = dir + "/" + name;
       std::error_code             error;
@@ -286,10 +304,11 @@ namespace rsfcycle
 
     template <int dim>
     void
-    SnapshotWriter<dim>::write_snapshot(const BodyState &state, const double t)
+    Snapshots<dim>::write_snapshot(const BodyState &state, const double t)
     {
-      TimerOutput::Scope            scope(timer, "Output");
-      const std::vector<la::Vector> field = base_fields(state);
+      TimerOutput::Scope            scope(*source.timer, "Output");
+      const auto                   &discretisation = *source.discretisation;
+      const std::vector<la::Vector> field          = base_fields(state);
       state.u.update_ghost_values();
       state.v.update_ghost_values();
       const auto &scalar_dofs = discretisation.scalar_dof_handler;
@@ -336,29 +355,11 @@ namespace rsfcycle
         material[cell->active_cell_index()] = cell->material_id();
       data_out.add_data_vector(material, "material_id");
       data_out.build_patches();
-      data_out.to_frame(frame, vectors ? 2 : 0); // displacement, velocity
+      data_out.to_frame(source.frame,
+                        vectors ? 2 : 0); // displacement, velocity
 
-      DataOutBase::VtkFlags flags;
-      flags.time  = t;
-      flags.cycle = n_snapshots;
-      // deal.II's default, zlib's best compression, made the snapshots
-      // a tenth of the paper run's wall time; best_speed writes files
-      // about 1.3x larger several times faster (ParaView reads both)
-      flags.compression_level = DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(flags);
-      const std::string number = Utilities::int_to_string(n_snapshots, 5);
-      const std::string name =
-        write_pieces(data_out, "solution/solution-" + number);
-      records.emplace_back(t, name);
-      if (is_root())
-        {
-          std::ostringstream pvd;
-          DataOutBase::write_pvd_record(pvd, records);
-          replace_file(dir + "/solution.pvd", pvd.str());
-        }
-
-      // The fault (contact faces) at the same times: fault/fault-NNNNN.vtu,
-      // fault.pvd (the paper's figure 9 draws isolines of V - v0 on it).
+      // The fault (contact faces) at the same times (the paper's figure 9
+      // draws isolines of V - v0 on it).
       InFrame<BoundaryFaces<dim>, dim> fault(boundary_id::contact);
       fault.attach_dof_handler(scalar_dofs);
       fault.add_data_vector(field[rate_minus_v0], "slip_rate_minus_v0");
@@ -369,20 +370,41 @@ namespace rsfcycle
       fault.add_data_vector(field[normal_stress], "normal_stress");
       fault.add_data_vector(field[mu], "friction_coefficient");
       fault.build_patches();
-      fault.to_frame(frame, 0);
-      fault.set_flags(flags);
-      const std::string fault_name =
-        write_pieces(fault, "fault/fault-" + number);
-      fault_records.emplace_back(t, fault_name);
-      if (is_root())
-        {
-          std::ostringstream fault_pvd;
-          DataOutBase::write_pvd_record(fault_pvd, fault_records);
-          replace_file(dir + "/fault.pvd", fault_pvd.str());
-        }
+      fault.to_frame(source.frame, 0);
+      store(data_out, fault, t, n_snapshots);
       state.u.zero_out_ghost_values();
       state.v.zero_out_ghost_values();
       ++n_snapshots;
+    }
+
+
+    template <int dim>
+    void
+    VtuSnapshots<dim>::store(DataOutInterface<dim, dim>     &body,
+                             DataOutInterface<dim - 1, dim> &fault,
+                             const double                    t,
+                             const unsigned int              number)
+    {
+      DataOutBase::VtkFlags flags;
+      flags.time  = t;
+      flags.cycle = number;
+      // deal.II's default, zlib's best compression, made the snapshots
+      // a tenth of the paper run's wall time; best_speed writes files
+      // about 1.3x larger several times faster (ParaView reads both)
+      flags.compression_level = DataOutBase::VtkFlags::best_speed;
+      body.set_flags(flags);
+      fault.set_flags(flags);
+      const std::string n = Utilities::int_to_string(number, 5);
+      records.emplace_back(t, write_pieces(body, "solution/solution-" + n));
+      fault_records.emplace_back(t, write_pieces(fault, "fault/fault-" + n));
+      if (is_root())
+        {
+          std::ostringstream pvd, fault_pvd;
+          DataOutBase::write_pvd_record(pvd, records);
+          replace_file(this->dir + "/solution.pvd", pvd.str());
+          DataOutBase::write_pvd_record(fault_pvd, fault_records);
+          replace_file(this->dir + "/fault.pvd", fault_pvd.str());
+        }
     }
 
 
@@ -392,12 +414,13 @@ namespace rsfcycle
      * the name to record in the PVD file.
      */
     template <int dim>
-    template <class DataWriter>
+    template <int patch_dim>
     std::string
-    SnapshotWriter<dim>::write_pieces(const DataWriter  &writer,
-                                      const std::string &stem) const
+    VtuSnapshots<dim>::write_pieces(
+      const DataOutInterface<patch_dim, dim> &writer,
+      const std::string                      &stem) const
     {
-      const MPI_Comm     comm = discretisation.triangulation.get_communicator();
+      const MPI_Comm     comm    = this->communicator();
       const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
       const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
       const auto         piece   = [&](const unsigned int r) {
@@ -408,7 +431,7 @@ namespace rsfcycle
       {
         std::ostringstream vtu;
         writer.write_vtu(vtu);
-        write_file(in_folder(piece(rank)), vtu.str());
+        write_file(this->in_folder(piece(rank)), vtu.str());
       }
       if (n_ranks == 1)
         return piece(0);
@@ -420,13 +443,15 @@ namespace rsfcycle
             pieces.push_back(piece(r).substr(folder.size()));
           std::ostringstream pvtu;
           writer.write_pvtu_record(pvtu, pieces);
-          write_file(in_folder(stem + ".pvtu"), pvtu.str());
+          write_file(this->in_folder(stem + ".pvtu"), pvtu.str());
         }
       return stem + ".pvtu";
     }
 
 
-    template class SnapshotWriter<2>;
-    template class SnapshotWriter<3>;
+    template class Snapshots<2>;
+    template class Snapshots<3>;
+    template class VtuSnapshots<2>;
+    template class VtuSnapshots<3>;
   } // namespace output
 } // namespace rsfcycle

@@ -27,8 +27,8 @@ namespace rsfcycle
     {
       Parameters::declare_parameters(prm,
                                      scene_names(),
-                                     time::integrator_names(),
-                                     time::scheme_names());
+                                     time::scheme_names(),
+                                     output::writer_names());
       Wedge<2>::declare_parameters(prm);
       MeshFile<2>::declare_parameters(prm);
       models::SpringSlider::declare_parameters(prm);
@@ -72,6 +72,11 @@ namespace rsfcycle
           : parameters(parameters)
           , scene(make_scene<dim>(parameters.run.scene, prm))
         {
+          output::check_writers(parameters,
+                                {output::Field::contact,
+                                 output::Field::stresses,
+                                 output::Field::body},
+                                "a continuum scene");
           if (green_function())
             models::GreenFault<dim>::check(parameters, *scene);
           else if (scene->split_fault() &&
@@ -113,7 +118,7 @@ namespace rsfcycle
               // (the SEAS stations and profiles against its nodes) now,
               // before the run folder is made: their constructors write
               // nothing
-              output::make_writers(parameters, fault->layout());
+              output::make_writers(parameters, fault->layout(), fault->offer());
             }
         }
 
@@ -156,7 +161,12 @@ namespace rsfcycle
       public:
         SpringSliderSimulation(const Parameters &parameters,
                                ParameterHandler &prm)
-          : slider(parameters, prm)
+          : slider((output::check_writers(parameters,
+                                          {output::Field::contact,
+                                           output::Field::stresses},
+                                          "the spring-slider"),
+                    parameters),
+                   prm)
         {}
 
         bool

@@ -130,7 +130,7 @@ check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset 
 # contact normal, and an other side whose nodes do not all pair (tag 12
 # given the role free: the creeping fault's nodes have no partner; refused
 # after the set-up, before the run folder).
-split="subsection Mesh file\nset File = $src/tests/meshes/split-fault-2d.msh\nset Materials = 10: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0; 20: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0\nset Gravity = 0, 0\nset Observation points =\nset Boundary roles = %ROLES%\nend\nsubsection Output\nset Write VTU = false\nsubsection SEAS\nset Benchmark = none\nend\nend"
+split="subsection Mesh file\nset File = $src/tests/meshes/split-fault-2d.msh\nset Materials = 10: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0; 20: density 2670, bulk modulus 53.39686e9, Poisson ratio 0.25, shear viscosity 0, bulk viscosity 0\nset Gravity = 0, 0\nset Observation points =\nset Boundary roles = %ROLES%\nend\nsubsection Output\nset Writers = time series, base profile, events\nsubsection SEAS\nset Benchmark = none\nend\nend"
 check_split() { # name, expected word, roles, prm body
   check_bp1 "$1" "$2" "${split//%ROLES%/$3}\n$4"
 }

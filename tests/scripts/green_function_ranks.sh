@@ -180,7 +180,8 @@ split=("set Displacement = vector" "subsection Mesh file"
   "  set Materials = 10: $material; 20: $material" "  set Gravity = 0, 0"
   "  set Load velocity = 0, 5e-10"
   "  set Observation points = fn+02: 2e3, 0; fn-02: -2e3, 0" "end"
-  "subsection Output" "  subsection SEAS" "    set Benchmark = none" "  end" "end"
+  "subsection Output" "  set Writers = time series, base profile, events"
+  "  subsection SEAS" "    set Benchmark = none" "  end" "end"
   "subsection Time stepping" "  set Tolerance = 1e-9" "end")
 # NAME-1 and NAME-2 from the prm lines, run on 1 and 2 ranks: the same
 # first event
@@ -208,7 +209,8 @@ dipping=("set Displacement = vector" "set Stop after events = 1"
   "  subsection Friction" "    set a = $a" "    set b - a = 0.015 - ($a)"
   "    set Initial state = 8e-3 / 1e-6 * exp((($a) * ln(2e-6 / 1e-9 * sinh(50e6 * 0.025 * asinh(1e-9 / 2e-6 * exp((0.6 + 0.015 * ln(1e-6 / 1e-9)) / 0.025)) / (($a) * 50e6))) - 0.6) / 0.015)"
   "  end" "end" "subsection Mesh" "  set Local refinements = 2" "end"
-  "subsection Output" "  subsection SEAS" "    set Benchmark = none" "  end" "end"
+  "subsection Output" "  set Writers = time series, base profile, events"
+  "  subsection SEAS" "    set Benchmark = none" "  end" "end"
   "subsection Time stepping" "  set Tolerance = 1e-9" "end")
 on_1_and_2_ranks dipping "dipping split fault, unstructured sides" \
   "${dipping[@]}"

@@ -27,7 +27,7 @@ subsection Mesh
   set Local refinements  = 3
 end
 subsection Output
-  set Write VTU        = false
+  set Writers          = time series, base profile, events, seas
   set Checkpoint steps = 20
   # the SEAS files are cut and appended on resume like the CSV files
   subsection SEAS
@@ -87,7 +87,7 @@ subsection Time stepping
 end
 subsection Output
   set Checkpoint steps = 200
-  set Write VTU = true
+  set Writers = time series, base profile, events, seas, vtu
 end
 PRM
 }
@@ -117,7 +117,7 @@ subsection Time stepping
 end
 subsection Output
   set Checkpoint steps = 40
-  set Write VTU = false
+  set Writers = time series, base profile, events, seas
 end
 PRM
 }

@@ -65,7 +65,7 @@ subsection Solver
   set Linear correction = multigrid
 end
 subsection Output
-  set Write VTU        = $2
+  set Writers          = $2
   set Checkpoint steps = 20
 end
 PRM
@@ -74,11 +74,11 @@ check() { # condition (0/1), label
   if [ "$1" -eq 0 ]; then n_pass=$((n_pass + 1)); echo "$2: ok";
   else n_fail=$((n_fail + 1)); echo "FAILED $2"; fi
 }
-make_wedge_prm kr-a false; make_wedge_prm kr-b false; make_wedge_prm kr-c false
+make_wedge_prm kr-a "time series, base profile, events"; make_wedge_prm kr-b "time series, base profile, events"; make_wedge_prm kr-c "time series, base profile, events"
 "${mpi[@]}" 2 "$exe" kr-a.prm > kr-a.log 2>&1
 check $? "2-rank wedge run"
 # the VTU of 2 ranks: pieces, .pvtu naming them, .pvd naming the .pvtu
-make_wedge_prm vtu true
+make_wedge_prm vtu "time series, base profile, events, vtu"
 sed -i 's/End time = 250/End time = 20/' vtu.prm
 "${mpi[@]}" 2 "$exe" vtu.prm > vtu.log 2>&1
 ok=1

@@ -18,7 +18,7 @@ exe=$1; src=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cd "$work" || exit 1
 n_pass=0; n_fail=0
 run_case() { # name, body, expected text in the screen output
-  printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 100\nset Output directory = %s\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Write VTU = false\nend\nsubsection Time stepping\nset Minimum step = 0.001\nend\n%b\n' \
+  printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 100\nset Output directory = %s\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Writers = time series, base profile, events\nend\nsubsection Time stepping\nset Minimum step = 0.001\nend\n%b\n' \
     "$src" "$src" "$1" "$2" > "$1.prm"
   "$exe" "$1.prm" > "$1.log" 2>&1
   local status=$?
@@ -43,7 +43,7 @@ run_case overflow 'subsection Wedge\nset Bulk modulus = 1e308\nend' \
 # first 100 s); the run must end normally and its progress lines must say
 # why a trial was refused, once per new failure. With the shipped cap it
 # must say nothing.
-printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 100\nset Output directory = refused\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Write VTU = false\nset Progress interval = 0\nend\nsubsection Solver\nset Maximum TNNMG iterations = %s\nset Inner tolerance factor = 0\nend\n' "$src" "$src" 2 > refused.prm
+printf 'include %s/prm/wedge-2d.prm\ninclude %s/tests/wedge-2d-pinned.prm\nset End time = 100\nset Output directory = refused\nsubsection Mesh\nset Global refinements = 2\nset Local refinements = 2\nend\nsubsection Output\nset Writers = time series, base profile, events\nset Progress interval = 0\nend\nsubsection Solver\nset Maximum TNNMG iterations = %s\nset Inner tolerance factor = 0\nend\n' "$src" "$src" 2 > refused.prm
 sed 's/= refused$/= not-refused/; s/Maximum TNNMG iterations = 2$/Maximum TNNMG iterations = 100/' refused.prm > not-refused.prm
 "$exe" refused.prm > refused.log 2>&1
 status=$?

@@ -52,7 +52,7 @@ subsection Mesh
   set Local refinements  = 2
 end
 subsection Output
-  set Write VTU = false
+  set Writers = time series, base profile, events
 end
 PRM
 "$exe" ../project/short.prm > short.log 2>&1 || { cat short.log; fail "run from another folder exits with $?"; }

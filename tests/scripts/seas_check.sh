@@ -41,7 +41,7 @@ run() {
     echo "  set Local refinements = $local"
     echo "end"
     echo "subsection Output"
-    echo "  set Write VTU = false"
+    echo "  set Writers = time series, base profile, events, seas"
     echo "  set Progress interval = 1e9"
     echo "  subsection SEAS"
     echo "    set Modeler = A. Tester"

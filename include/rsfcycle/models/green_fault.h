@@ -187,13 +187,13 @@ namespace rsfcycle
       void
       describe(std::ostream &log) const override;
       /**
-       * With `Output/Write VTU`: the VTU snapshots of the volume path
-       * (output::SnapshotWriter), the body's displacement and velocity at
-       * each output time from one static solve each with the contact held
-       * at the slip and the slip rate (body()).
+       * The body for the snapshots of `Output/Writers` (vtu, hdf5): its
+       * displacement and velocity at each output time from one static
+       * solve each with the contact held at the slip and the slip rate
+       * (body()).
        */
-      std::vector<std::unique_ptr<output::Writer>>
-      writers() override;
+      output::Offer
+      offer() override;
       /** @} */
 
       /**

@@ -53,8 +53,8 @@ namespace rsfcycle
      * the same writers. A failed write throws output::file_error.
      *
      * A new output is a class derived from Writer in output/ and one line
-     * in output::make_writers() (output/writers.cc), or, for an output of
-     * one model (its VTU snapshots), in that model's writers().
+     * in the list of output/writers.cc (its name in `Output/Writers`, the
+     * fields it needs, how it is made).
      */
     class Writer
     {

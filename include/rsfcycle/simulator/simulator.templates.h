@@ -114,7 +114,7 @@ namespace rsfcycle
             std::to_string(s.writer_names.size()) +
             " outputs, parameters.prm asks for " +
             std::to_string(names.size()) +
-            " (was Output/SEAS or Output/Write VTU changed?)");
+            " (was Output/Writers changed?)");
         for (const auto &writer : writers)
           writer->load(ar);
       });
@@ -178,9 +178,7 @@ namespace rsfcycle
                             moment_weights));
     LoopState &s = *loop_state;
     s.state      = model.initial_state();
-    writers      = output::make_writers(parameters, layout);
-    for (auto &writer : model.writers())
-      writers.push_back(std::move(writer));
+    writers      = output::make_writers(parameters, layout, model.offer());
     // On resume, everything that can refuse the run folder (checkpoint,
     // record files) is checked before the first byte is written to it.
     if (resume)

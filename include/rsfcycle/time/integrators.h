@@ -19,29 +19,18 @@ namespace rsfcycle
   namespace time
   {
     /**
-     * The integrators by name (`Time stepping/Integrator`): a new
-     * integrator is a class derived from Integrator in time/, its name here
-     * and one line in make_integrator().
-     */
-    inline std::string
-    integrator_names()
-    {
-      return "implicit|arkode|runge-kutta";
-    }
-
-
-    /**
      * The part of the model an integrator needs (an ImplicitModel, an
      * OdeModel), or one line naming the entry if the model has none.
      */
     template <typename Interface, typename State>
     Interface &
-    model_as(Model<State> &model, const std::string &integrator)
+    model_as(Model<State>                            &model,
+             const TimeSteppingParameters::Integrator integrator)
     {
       if (auto *part = dynamic_cast<Interface *>(&model))
         return *part;
       throw std::invalid_argument(
-        "Time stepping/Integrator = " + integrator + ": this model (" +
+        "Time stepping/Integrator = " + name_of(integrator) + ": this model (" +
         model.checkpoint_identity().scene + ") cannot be integrated that way");
     }
 
@@ -51,19 +40,22 @@ namespace rsfcycle
     std::unique_ptr<Integrator<State>>
     make_integrator(const Parameters &parameters, Model<State> &model)
     {
-      const std::string &name = parameters.time_stepping.integrator;
-      if (name == "implicit")
-        return make_step_size_control(parameters.time_stepping,
-                                      model_as<ImplicitModel<State>>(model,
-                                                                     name));
-      if (name == "arkode")
-        return std::make_unique<ArkodeIntegrator<State>>(
-          parameters, model_as<OdeModel<State>>(model, name));
-      if (name == "runge-kutta")
-        return std::make_unique<RungeKuttaIntegrator<State>>(
-          parameters.time_stepping, model_as<OdeModel<State>>(model, name));
-      throw std::invalid_argument("Time stepping/Integrator = " + name +
-                                  ": allowed are " + integrator_names());
+      using Kind      = TimeSteppingParameters::Integrator;
+      const Kind name = parameters.time_stepping.integrator;
+      switch (name)
+        {
+          case Kind::implicit:
+            return make_step_size_control(parameters.time_stepping,
+                                          model_as<ImplicitModel<State>>(model,
+                                                                         name));
+          case Kind::arkode:
+            return std::make_unique<ArkodeIntegrator<State>>(
+              parameters, model_as<OdeModel<State>>(model, name));
+          case Kind::runge_kutta:
+            return std::make_unique<RungeKuttaIntegrator<State>>(
+              parameters.time_stepping, model_as<OdeModel<State>>(model, name));
+        }
+      throw std::logic_error("make_integrator: a Kind without its case");
     }
   } // namespace time
 } // namespace rsfcycle

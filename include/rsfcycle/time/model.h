@@ -7,6 +7,7 @@
 #include <rsfcycle/output/checkpoint.h>
 #include <rsfcycle/output/sample.h>
 #include <rsfcycle/output/writer.h>
+#include <rsfcycle/output/writers.h>
 #include <string>
 #include <vector>
 
@@ -59,11 +60,12 @@ namespace rsfcycle
       describe(std::ostream &log) const = 0;
 
       /**
-       * The model's own outputs (the continuum's VTU snapshots), written
-       * besides those every model has (output/writers.h).
+       * What the model offers the writers of `Output/Writers`
+       * (output/writers.h): by default the contact's slip and stresses; a
+       * model with a body on a mesh adds the body (the snapshots' source).
        */
-      virtual std::vector<std::unique_ptr<output::Writer>>
-      writers()
+      virtual output::Offer
+      offer()
       {
         return {};
       }

@@ -3,6 +3,7 @@
 #include <functional>
 #include <rsfcycle/output/base_profile.h>
 #include <rsfcycle/output/event_catalogue.h>
+#include <rsfcycle/output/hdf5_snapshots.h>
 #include <rsfcycle/output/seas_files.h>
 #include <rsfcycle/output/seas_plane_files.h>
 #include <rsfcycle/output/snapshots.h>
@@ -80,7 +81,8 @@ namespace rsfcycle
                c.dir, !c.layout.lateral_positions.empty());
            }},
           {"seas", {Field::contact, Field::stresses}, seas_files},
-          {"vtu", {Field::body}, body_writer<VtuSnapshots>}};
+          {"vtu", {Field::body}, body_writer<VtuSnapshots>},
+          {"hdf5", {Field::body}, body_writer<Hdf5Snapshots>}};
         return list;
       }
 

@@ -24,6 +24,10 @@ jobs=${JOBS:-2}
 packages=(libdeal.ii-dev libsuitesparse-dev libhmat-oss-dev libopenblas0-serial
   openmpi-bin cmake g++ make numdiff python3-matplotlib python3-numpy
   python3-pandas python3-pytest clang-format-14 git gmsh)
+# the tests open HDF5/XDMF and VTU snapshots in ParaView (pvbatch)
+if [[ $mode == test ]]; then
+  packages+=(paraview python3-paraview xvfb xauth)
+fi
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """A run folder's VTU snapshots in ParaView, without a display.
 
-    python3 -m rsfcycle.paraview check RUN|FILE.pvd
+    python3 -m rsfcycle.paraview check RUN|FILE.pvd|FILE.xdmf
     python3 -m rsfcycle.paraview screenshot RUN OUT.png [FIELD]
 
 `check` opens RUN/solution.pvd (or the .pvd given), updates it at the last
@@ -71,8 +71,8 @@ def main(argv=None):
     if args.command == "check":
         arguments = [pvd_file(args.target)]
         if not os.path.exists(arguments[0]):
-            print(f"{arguments[0]}: not found (a run with Output/Write VTU "
-                  "= true writes it)", file=sys.stderr)
+            print(f"{arguments[0]}: not found (a run with vtu in Output/Writers "
+                  "writes it)", file=sys.stderr)
             return 2
     else:
         arguments = [args.run, args.out, args.field]

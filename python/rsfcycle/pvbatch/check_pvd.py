@@ -1,24 +1,34 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
-"""Headless check of an rsfcycle run folder's PVD record with ParaView.
+"""Headless check of an rsfcycle run folder's snapshots with ParaView.
 
-Usage: python3 -m rsfcycle.paraview check RUN (runs this script as
-  xvfb-run -a pvbatch check_pvd.py RUN/solution.pvd)
+Usage: python3 -m rsfcycle.paraview check RUN|FILE (runs this script as
+  xvfb-run -a pvbatch check_pvd.py RUN/solution.pvd or FILE)
 
-Opens the record, updates it at the last time step and prints the number of
-time steps, points and cells, and every point and cell array with its range
-(per component; vectors also by magnitude). Exits with status 1 if one of the
-fields that rsfcycle writes is missing. deal.II writes cell-wise vectors such
+Opens the record (solution.pvd or fault.pvd of the VTU snapshots,
+solution.xdmf or fault.xdmf of the HDF5 ones), updates it at the last time
+step and prints the number of time steps, points and cells, and every point
+and cell array with its range (per component; vectors also by magnitude).
+Exits with status 1 if one of the fields that rsfcycle writes into that
+record is missing. deal.II writes cell-wise vectors such
 as material_id as point data constant on each cell (VTU files from DataOut
 hold no cell data), so material_id is accepted from either.
 """
 
 import sys
 
-from paraview.simple import PVDReader
+import os
 
-POINT_ARRAYS = ["displacement", "velocity", "slip_rate", "state",
-                "friction_coefficient", "shear_traction"]
-CELL_ARRAYS = ["material_id"]
+from paraview.simple import PVDReader, XDMFReader
+
+# the fields of the body's record (solution.*) and of the fault's (fault.*)
+POINT_ARRAYS = {
+    "solution": ["displacement", "velocity", "slip_rate",
+                 "log10_slip_rate_over_v0", "state", "friction_coefficient",
+                 "shear_traction", "normal_stress"],
+    "fault": ["slip_rate_minus_v0", "log10_slip_rate_over_v0", "state",
+              "slip_um", "shear_traction", "normal_stress",
+              "friction_coefficient"]}
+CELL_ARRAYS = {"solution": ["material_id", "mpi_rank"], "fault": []}
 
 
 def print_arrays(kind, arrays):
@@ -38,7 +48,16 @@ def main():
     if len(sys.argv) != 2:
         print(__doc__)
         return 2
-    reader = PVDReader(FileName=sys.argv[1])
+    path = sys.argv[1]
+    if not os.path.isfile(path):
+        print(f"{path}: not found")
+        return 2
+    stem, extension = os.path.splitext(os.path.basename(path))
+    kind = "fault" if stem == "fault" else "solution"
+    if extension == ".xdmf":
+        reader = XDMFReader(FileNames=[path])
+    else:
+        reader = PVDReader(FileName=path)
     times = list(reader.TimestepValues)
     last = times[-1] if times else 0.0
     reader.UpdatePipeline(time=last)
@@ -52,13 +71,13 @@ def main():
     print_arrays("Point", reader.PointData)
     print_arrays("Cell", reader.CellData)
 
-    missing = [f"point array {name}" for name in POINT_ARRAYS
+    missing = [f"point array {name}" for name in POINT_ARRAYS[kind]
                if name not in reader.PointData.keys()]
-    for name in CELL_ARRAYS:
+    for name in CELL_ARRAYS[kind]:
         if name in reader.CellData.keys():
             continue
         if name in reader.PointData.keys():
-            # deal.II 9.4's write_vtu has no VTK cell data: it writes a cell
+            # deal.II 9.4's DataOut has no cell data: it writes a cell
             # vector as point values that are constant on each cell.
             print(f"Note: {name} found as point data, constant per cell")
         else:

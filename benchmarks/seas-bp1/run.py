@@ -13,6 +13,9 @@
   results           benchmarks/seas-bp1/results.csv from the run folders
                     in WORK (rsfcycle.results.record), and the event-by-
                     event comparisons printed
+  cost              rsfcycle against QDYN at equal accuracy: each at the
+                    loosest tolerance that leaves its own 1000-year
+                    catalogue unchanged
   figures           every figure of the README into figures/ from WORK
   cycles            log10 V at fault stations cycle by cycle, rsfcycle's
                     BP1-QD runs against QDYN's
@@ -47,7 +50,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 YEAR = catalog.YEAR
 THRESHOLD = 1e-3  # [m/s]
 FD_MERGE = 3600.0  # [s]: BP1-FD's Output/Event merge time
-NO_VTU = {"Output/Write VTU": "false"}
+NO_VTU = {"Output/Writers": "time series, base profile, events, seas"}
 FD3 = dict(NO_VTU, **{"Stop after events": 3})
 FD1 = dict(NO_VTU, **{"Stop after events": 1})
 
@@ -106,6 +109,14 @@ RUNS = {
         "Mesh/Local refinements": 6, "Mesh file/File": mesh("seas-bp1.msh")},
         "BP2-QD at 25 m on BP1's 400 km body", ""),
 }
+# equal accuracy (`cost`): 1000 QDYN years (365 days) of BP1-QD at the
+# shipped step tolerance and looser ones
+EQUAL = 3.1536e10  # [s]
+for _tol in ("1e-5", "3e-5", "1e-4", "3e-4"):
+    RUNS["bp1-qd-1000yr-" + _tol] = (
+        "seas-bp1-qd.prm", {"End time": EQUAL, **NO_VTU,
+                            "Time stepping/Tolerance": _tol},
+        f"BP1-QD, 25 m, 1000 yr, delta {_tol} (`cost`)", "")
 
 # the peers' runs: name -> (script, folder in WORK, arguments, the run's
 # name in the folder (QDYN), what it is, cost key)
@@ -125,6 +136,11 @@ PEERS = {
                     ["--h", "0.1", "--trigger-qd2fd", "1e-4"], "",
                     "SCycle at 100 m, the wave equation from 0.1 mm/s", ""),
 }
+for _acc in ("1e-8", "1e-7", "1e-6", "1e-5"):
+    PEERS["qdyn-bp1-1000yr-" + _acc] = (
+        "qdyn", "qdyn-1000yr", ["--tmax", "1000", "--acc", _acc],
+        "A_L40_N2048" + ("" if _acc == "1e-8" else "_ACC" + _acc),
+        f"QDYN, BP1-QD, N = 2048, 1000 yr, ACC {_acc} (`cost`)", "")
 SOURCES = {"qdyn": ("QDYN_SRC", "src/pyqdyn.py", qdyn.URL),
            "scycle": ("SCYCLE_SRC", "source/Makefile", scycle.URL)}
 
@@ -818,6 +834,71 @@ def work_precision(runs, reference, path):
     plt.close(fig)
 
 
+def unchanged(events, reference, within=1e-4):
+    """The largest relative change of an event's start against the
+    reference catalogue, if both have the same number of events and every
+    start moved by less than `within`; None otherwise."""
+    if len(events) != len(reference) or not events:
+        return None
+    worst = max(abs(a.start - b.start) / b.start
+                for a, b in zip(events, reference))
+    return worst if worst < within else None
+
+
+def cmd_cost(args):
+    """rsfcycle's cost against QDYN's at equal accuracy over 1000 years of
+BP1-QD: the runs bp1-qd-1000yr-DELTA (`runs`) and qdyn-bp1-1000yr-ACC
+(`peers`; run the two sets side by side, one core each). For each code the
+run at the tightest tolerance is the reference; the loosest one whose
+catalogue has the same events, every start within 0.01 % of the
+reference's, is taken, and the ratio of the two codes' wall times there
+goes to results.csv (bp1-qd.equal_*)."""
+    families = {
+        "rsfcycle": [n for n in RUNS if n.startswith("bp1-qd-1000yr-")],
+        "QDYN": [n for n in PEERS if n.startswith("qdyn-bp1-1000yr-")]}
+    chosen = {}
+    for code, names in families.items():
+        # tightest first: the tolerance follows "1000yr-"
+        names = sorted(names, key=lambda n: float(n.split("1000yr-")[1]))
+        found = []
+        for name in names:
+            series = load(args.work, [(name, name)], "cost")
+            if series:
+                found.append((name, series[0]))
+        if not found:
+            print(f"run.py: no {code} run of `cost` in {args.work}",
+                  file=sys.stderr)
+            return 2
+        reference = found[0][1].events()
+        for name, series in found:
+            folder = (peer_folder(args.work, name) if name in PEERS else
+                      os.path.join(args.work, name))
+            wall = (time_v(os.path.join(folder, "time.txt"))["wall_s"]
+                    if name in PEERS else run.wall_time(folder))
+            worst = unchanged(series.events(), reference)
+            state = ("reference" if name == found[0][0] else "unchanged, "
+                     f"starts within {100 * worst:.4f} %" if worst is not None
+                     else "changed")
+            print(f"{code:8} {name:26} {len(series.events()):3d} events  "
+                  f"wall {wall:8.1f} s  {state}")
+            if worst is not None or name == found[0][0]:
+                chosen[code] = (name, wall, folder)
+    (ours, ours_wall, folder), (peer, peer_wall, _) = (chosen["rsfcycle"],
+                                                       chosen["QDYN"])
+    ratio = ours_wall / peer_wall
+    print(f"equal accuracy: {ours} over {peer}: {ratio:.2f}x")
+    record = Recorder(args.work)
+    record("bp1-qd.equal_rsfcycle", RUNS[ours][1]["Time stepping/Tolerance"],
+           "", "rsfcycle's loosest step tolerance with its 1000-year "
+           "catalogue unchanged (starts within 0.01 %)", ours, folder)
+    record("bp1-qd.equal_qdyn", PEERS[peer][2][-1], "",
+           "QDYN's loosest ACC with its 1000-year catalogue unchanged", peer)
+    record("bp1-qd.equal_ratio", f"{ratio:.2f}", "×",
+           "rsfcycle's wall time over QDYN's at equal accuracy (1000 yr, "
+           "each at its loosest unchanged tolerance)", ours, folder)
+    return 0
+
+
 def cmd_figures(args):
     """Redraw the README's figures (figures/, figures/fd-elastic,
 figures/fd-scycle, figures/bp2) from the run folders in WORK; a figure
@@ -952,6 +1033,7 @@ def main(argv=None):
           (("--scycle-src",), {"help": "SCycle clone (default: "
                                "$SCYCLE_SRC)"}))
     stage(cmd_results, "results.csv from the run folders")
+    stage(cmd_cost, "rsfcycle against QDYN at equal accuracy")
     stage(cmd_figures, "the README's figures from the run folders")
     stage(cmd_cycles, "BP1-QD cycle by cycle against QDYN",
           (("names",), {"nargs": "*", "default": ["bp1-qd", "bp1-qd-50m"],

@@ -5,7 +5,7 @@
 #
 # Usage (from the repository's root):
 #   PYTHONPATH=python QDYN_SRC=DIR benchmarks/seas-bp1/qdyn/run.sh OUTDIR
-#       [--bp2 | --bp2-only] [--tmax YEARS] [--n N]
+#       [--bp2 | --bp2-only] [--tmax YEARS] [--n N] [--acc ACC]
 #
 # DIR: a git clone of https://github.com/ydluo/qdyn. If its HEAD is not the
 # pinned commit, a clean clone is checked out at it (detached HEAD) and
@@ -25,7 +25,8 @@
 #                         D_c = 4 mm, 1200 years
 # --tmax YEARS ends both at YEARS instead (a test); --n N takes N elements
 # instead of 2048 (a power of 2: 1024 gives 39.06 m, 4096 9.77 m; the
-# names say N). Each folder gets qdyn.in, iot_depths.txt, QDYN's output,
+# names say N); --acc ACC takes QDYN's ACC instead of 1e-8 (the names end
+# in _ACC<ACC>). Each folder gets qdyn.in, iot_depths.txt, QDYN's output,
 # log.txt (QDYN's screen output) and time.txt (/usr/bin/time -v). OUTDIR
 # gets NAME.gen.txt (the input's summary), timing.txt (start and end
 # dates), stats_NAME.md and stats_NAME_events.csv (the event table) and
@@ -44,6 +45,7 @@ outdir=
 cases="A"
 tmax=
 n=2048
+acc=1e-8
 while [ $# -gt 0 ]; do
     case $1 in
         --bp2) cases="A BP2" ;;
@@ -58,6 +60,11 @@ while [ $# -gt 0 ]; do
             n=$2
             shift
             ;;
+        --acc)
+            [ $# -ge 2 ] || die "--acc needs QDYN's ACC"
+            acc=$2
+            shift
+            ;;
         -h | --help) help_if_asked "$1" ;;
         -*) die "unknown option $1" ;;
         *)
@@ -67,7 +74,7 @@ while [ $# -gt 0 ]; do
     esac
     shift
 done
-[ -n "$outdir" ] || die "usage: QDYN_SRC=DIR run.sh OUTDIR [--bp2 | --bp2-only] [--tmax YEARS] [--n N]"
+[ -n "$outdir" ] || die "usage: QDYN_SRC=DIR run.sh OUTDIR [--bp2 | --bp2-only] [--tmax YEARS] [--n N] [--acc ACC]"
 [ -n "${QDYN_SRC:-}" ] || die "set QDYN_SRC to a clone of https://github.com/ydluo/qdyn"
 "$PYTHON" -c "import rsfcycle.peers.qdyn" 2> /dev/null ||
     die "$PYTHON cannot import rsfcycle: run from the repository's root with PYTHONPATH=python"
@@ -122,11 +129,13 @@ run_case() {  # name, stats options, input options ...
         --csv "$outdir/${name}_series.csv" $stats_options
 }
 
+suffix=
+[ "$acc" = 1e-8 ] || suffix=_ACC$acc
 for c in $cases; do
     case $c in
-        A) run_case "A_L40_N$n" "--regular-from 5" \
-            --length 40e3 --n "$n" --acc 1e-8 --tmax-yr 3000 ;;
-        BP2) run_case "BP2_L40_N$n" "" \
-            --length 40e3 --n "$n" --acc 1e-8 --tmax-yr 1200 --dc 4e-3 ;;
+        A) run_case "A_L40_N$n$suffix" "--regular-from 5" \
+            --length 40e3 --n "$n" --acc "$acc" --tmax-yr 3000 ;;
+        BP2) run_case "BP2_L40_N$n$suffix" "" \
+            --length 40e3 --n "$n" --acc "$acc" --tmax-yr 1200 --dc 4e-3 ;;
     esac
 done

@@ -418,7 +418,7 @@ def thresholds(runs="default,sigma-x1.05,a-outside-0.015", record=False,
         if not finished(folder):
             bench.die(f"{folder}: no finished run (the stage runs makes it)")
         ts = plot.series(folder)
-        rates = plot.profile(folder)
+        rates = run.base_profile(folder)
         for k in THRESHOLDS:
             found = events.detect(ts["time_s"], ts["max_slip_rate_m_per_s"],
                                   v0, k, rates)

@@ -86,7 +86,7 @@ def detect(times, max_rate, v0, threshold, profile=None) -> List[Event]:
     doc/events.md: an event while the largest slip rate exceeds threshold
     × v0 (rsfcycle.catalog.detect on the time series), its nucleation
     position, rupture width and slip from the slip-rate profile
-    (rsfcycle.plot.Profile; only as fine as its rows, which are dense
+    (rsfcycle.run.Profile; only as fine as its rows, which are dense
     during events)."""
     import numpy as np
     found = catalog.detect(times, max_rate, threshold * v0)

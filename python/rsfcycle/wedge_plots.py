@@ -34,8 +34,8 @@ import sys
 
 from rsfcycle import events as catalogue
 from rsfcycle import run
-from rsfcycle.plot import (UM, _pyplot, event_window, number, profile,
-                           savefig, series)
+from rsfcycle.drawing import (UM, _pyplot, event_window, number, profile,
+                              savefig, series)
 
 COLORS = ["tab:red", "tab:blue", "tab:green", "tab:purple"]
 LAB_STATEMENTS = [

@@ -9,7 +9,7 @@ import shutil
 
 import pytest
 
-from rsfcycle import events, plot, run
+from rsfcycle import drawing, events, run
 
 RUN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fixtures",
                    "run")
@@ -30,9 +30,9 @@ def test_read_without_events_csv(tmp_path):
 
 
 def test_detect_from_the_series_and_the_profile():
-    ts = plot.series(RUN)
+    ts = drawing.series(RUN)
     found = events.detect(ts["time_s"], ts["max_slip_rate_m_per_s"], 5e-5,
-                          10, plot.profile(RUN))
+                          10, drawing.profile(RUN))
     assert [e.start for e in found] == [10, 20, 30]
     assert [round(e.end, 2) for e in found] == [10.15, 20.15, 30.15]
     first = found[0]
@@ -59,7 +59,7 @@ def test_transition_rule():
 
 
 def test_jumps_of_the_uplift():
-    ts = plot.series(RUN)
+    ts = drawing.series(RUN)
     jump = events.jumps(ts["time_s"], ts["uplift_15cm_m"], [10, 20],
                         [10.15, 20.15])
     assert jump == pytest.approx([50.15e-6, 50.15e-6], rel=1e-3)

@@ -14,7 +14,7 @@ matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from rsfcycle import plot, wedge_plots  # noqa: E402
+from rsfcycle import drawing, plot, wedge_plots  # noqa: E402
 
 RUN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fixtures",
                    "run")
@@ -33,7 +33,7 @@ def copy_run(tmp_path, name="run"):
 
 
 def test_profile_of_the_fixture():
-    rates = plot.profile(RUN)
+    rates = drawing.profile(RUN)
     assert rates.positions.tolist()[:3] == [0, 0.1, 0.17]
     assert rates.z is None
     assert rates.rates.shape == (len(rates.times), 8)
@@ -45,7 +45,7 @@ def test_profile_3d_leaves_out_a_row_cut_short(tmp_path):
     (tmp_path / "base-profile.csv").write_text(
         "# slip rate\ntime_s,0,0,1,1\nz_m,0,1,0,1\n0,1,2,3,4\n"
         "0.5,5,6,7,8\n1,9,10")
-    rates = plot.profile(str(tmp_path))
+    rates = drawing.profile(str(tmp_path))
     assert rates.z.tolist() == [0, 1, 0, 1]
     assert rates.times.tolist() == [0, 0.5]
     assert rates.rates[1].tolist() == [5, 6, 7, 8]
@@ -53,15 +53,15 @@ def test_profile_3d_leaves_out_a_row_cut_short(tmp_path):
 
 def test_profile_missing_file(tmp_path):
     with pytest.raises(FileNotFoundError):
-        plot.profile(str(tmp_path))
+        drawing.profile(str(tmp_path))
 
 
 def test_series_leaves_out_a_row_cut_short(tmp_path):
     folder = copy_run(tmp_path)
-    full = plot.series(RUN)
+    full = drawing.series(RUN)
     with open(os.path.join(folder, "time-series.csv"), "a") as f:
         f.write("41,1,2")
-    cut = plot.series(folder)
+    cut = drawing.series(folder)
     assert len(cut["time_s"]) == len(full["time_s"])
 
 
@@ -83,10 +83,10 @@ def test_event_window():
     from rsfcycle.events import Event
     found = [Event(k + 1, 10.0 * (k + 1), 10.0 * (k + 1) + 0.2,
                    recurrence=10.0 if k else math.nan) for k in range(3)]
-    window, shown = plot.event_window(found, 35.0, 2)
+    window, shown = drawing.event_window(found, 35.0, 2)
     assert [e.number for e in shown] == [2, 3]
     assert window == (15.0, 35.0)
-    assert plot.event_window(found, 5.0, 2) == (None, [])
+    assert drawing.event_window(found, 5.0, 2) == (None, [])
 
 
 def test_backstop_and_patch():

@@ -298,7 +298,7 @@ namespace rsfcycle
       discretisation.release_assembled_matrices();
     setup_observation_points();
     la::load_partitioner() = discretisation.partitioner;
-    implicit_step          = std::make_unique<time::ImplicitStep<dim>>(
+    implicit_step          = std::make_unique<models::ImplicitStep<dim>>(
       parameters.solver,
       *scheme,
       discretisation,

@@ -15,7 +15,7 @@
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
 #include <rsfcycle/time/implicit_model.h>
-#include <rsfcycle/time/implicit_step.h>
+#include <rsfcycle/models/implicit_step.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/time_scheme.h>
 #include <vector>
@@ -36,7 +36,7 @@ namespace rsfcycle
    *  - TNNMG with its linear correction (solvers/), for `multigrid` the
    *    geometric MGTransfer hierarchy of the locally refined mesh;
    *  - the implicit step of `Solver/Time scheme` with the rate/state
-   *    coupling (time/implicit_step.h);
+   *    coupling (models/implicit_step.h);
    *  - the ParameterHandler-driven time loop, through run(): it hands itself
    *    to the Simulator (simulator/simulator.h), which builds the
    *    integrator and the writers of `Output/Writers` (the snapshots of
@@ -201,7 +201,7 @@ namespace rsfcycle
     std::unique_ptr<solvers::TNNMG>            tnnmg;
     /** The time scheme of the implicit step (`Solver/Time scheme`). */
     const std::unique_ptr<const time::TimeScheme> scheme;
-    std::unique_ptr<time::ImplicitStep<dim>>      implicit_step;
+    std::unique_ptr<models::ImplicitStep<dim>>      implicit_step;
 
     BodyState initial;
     /** Contact nodes with a tensile reaction in the gravity equilibrium. */

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#ifndef rsfcycle_time_implicit_step_h
-#define rsfcycle_time_implicit_step_h
+#ifndef rsfcycle_models_implicit_step_h
+#define rsfcycle_models_implicit_step_h
 
 #include <deal.II/base/timer.h>
 #include <functional>
@@ -19,8 +19,10 @@
 
 namespace rsfcycle
 {
-  namespace time
+  namespace models
   {
+    using time::TimeScheme;
+
     /**
      * One implicit step of the continuum: the time scheme of `Solver/Time
      * scheme` (time/time_scheme.h; the paper's Newmark step (15) for
@@ -185,7 +187,7 @@ namespace rsfcycle
       std::string             failure;
       dealii::TimerOutput    *timer = nullptr;
     };
-  } // namespace time
+  } // namespace models
 } // namespace rsfcycle
 
 #endif

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <cmath>
 #include <rsfcycle/format.h>
-#include <rsfcycle/time/implicit_step.h>
+#include <rsfcycle/models/implicit_step.h>
 #include <rsfcycle/time/rate_state_coupling.h>
 #include <sstream>
 
 namespace rsfcycle
 {
-  namespace time
+  namespace models
   {
     template <int dim>
     ImplicitStep<dim>::ImplicitStep(
@@ -190,7 +190,7 @@ namespace rsfcycle
           why = tnnmg_failure(stats, t, tau, k, v);
         return stats.converged;
       };
-      const auto coupled = couple_rate_and_state(
+      const auto coupled = time::couple_rate_and_state(
         solver.coupling,
         solver.fixed_point_tolerance,
         solver.max_fixed_point_iterations,
@@ -438,5 +438,5 @@ namespace rsfcycle
 
     template class ImplicitStep<2>;
     template class ImplicitStep<3>;
-  } // namespace time
+  } // namespace models
 } // namespace rsfcycle

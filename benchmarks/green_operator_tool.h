@@ -12,9 +12,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <iostream>
 #include <memory>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 #include <stdexcept>
 #include <string>

@@ -1,89 +1,29 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // rsfcycle: earthquake cycles of a Kelvin-Voigt body on a rate-and-state
-// base (Pipping, Kornhuber, Rosenau, Oncken 2016). The thin driver: read the
-// parameter file, build the scene, run the generic solver.
+// base (Pipping, Kornhuber, Rosenau, Oncken 2016). The command line: it
+// parses the arguments and the parameter file and hands the run to the
+// composition root (app/simulation.h).
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
-#include <rsfcycle/output/files.h>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <rsfcycle/version.h>
-#include <streambuf>
 #include <string>
 #include <utility>
 
 namespace
 {
-  /**
-   * The buffer of the log stream: every character goes to the screen and
-   * to log.txt in the run folder. log.txt is opened at the first character
-   * (appended to on resume), so that a run refused before its first log
-   * line, such as a resume from a damaged checkpoint, leaves the folder as
-   * it was. A failed write to log.txt throws "log.txt: reason" (the stream
-   * passes it on with exceptions(badbit)); the screen's failures are
-   * ignored, log.txt being the record.
-   */
-  class LogBuffer : public std::streambuf
-  {
-  public:
-    LogBuffer(std::streambuf *screen, const std::string &path, bool append)
-      : screen(screen)
-      , path(path)
-      , mode(std::ios::out | (append ? std::ios::app : std::ios::trunc))
-    {}
-
-  protected:
-    int
-    overflow(int c) override
-    {
-      if (c == EOF)
-        return !EOF;
-      screen->sputc(c);
-      if (!file.is_open() && !file.open(path, mode))
-        throw rsfcycle::output::file_error(path, errno);
-      if (file.sputc(c) == EOF)
-        throw rsfcycle::output::file_error(path, errno);
-      return c;
-    }
-    int
-    sync() override
-    {
-      screen->pubsync();
-      if (file.is_open() && file.pubsync() != 0)
-        throw rsfcycle::output::file_error(path, errno);
-      return 0;
-    }
-
-  private:
-    std::streambuf          *screen;
-    const std::string        path;
-    const std::ios::openmode mode;
-    std::filebuf             file;
-  };
-
-  /** The log of the ranks other than the first: nothing is written. */
-  class NullBuffer : public std::streambuf
-  {
-  protected:
-    int
-    overflow(int c) override
-    {
-      return c == EOF ? !EOF : c;
-    }
-  };
-
   void
   print_help()
   {
@@ -164,138 +104,6 @@ namespace
     return result;
   }
 
-  /**
-   * The run folder must not hold an earlier run unless the user asked to
-   * overwrite it; it must be writable. Checked before anything is written.
-   */
-  void
-  prepare_output_directory(const std::string &dir, const bool overwrite)
-  {
-    namespace fs = std::filesystem;
-    if (fs::exists(dir) && !fs::is_directory(dir))
-      throw std::invalid_argument("Output directory = " + dir +
-                                  ": exists and is not a folder");
-    if (fs::exists(dir) && !fs::is_empty(dir) && !overwrite)
-      throw std::invalid_argument(
-        "Output directory = " + dir +
-        ": holds an earlier run; choose another folder, or use --force "
-        "(or set Overwrite output = true) to overwrite it");
-    std::error_code error;
-    fs::create_directories(dir, error);
-    // an earlier run's SEAS files (their names depend on the benchmark and
-    // its stations, so the new run might not write over each of them): an
-    // upload must not carry stray files; removed only in a folder whose
-    // parameters.prm says rsfcycle wrote it
-    std::string first_line;
-    std::getline(std::ifstream(dir + "/parameters.prm"), first_line);
-    if (overwrite && first_line.rfind("# rsfcycle ", 0) == 0)
-      for (const auto &entry : fs::directory_iterator(dir, error))
-        {
-          const std::string name = entry.path().filename().string();
-          const bool        seas = name.rfind("fltst_", 0) == 0 ||
-                            name.rfind("srfst_", 0) == 0 ||
-                            name.rfind("blkst_", 0) == 0 ||
-                            (entry.path().extension() == ".dat");
-          if (seas && entry.is_regular_file())
-            fs::remove(entry.path(), error);
-        }
-    const std::string probe = dir + "/.rsfcycle-write-test";
-    if (error || !std::ofstream(probe))
-      throw std::invalid_argument("Output directory = " + dir +
-                                  ": cannot be created or written");
-    fs::remove(probe);
-  }
-
-  /**
-   * The number of processes and this process's rank as the MPI launcher
-   * (Open MPI's mpirun, or a PMI launcher such as MPICH's or Slurm's) set
-   * them in the environment, known before MPI is started (the spring-slider
-   * never starts it); 1 and 0 without a launcher.
-   */
-  std::pair<unsigned int, unsigned int>
-  launched_processes()
-  {
-    for (const auto &[size, rank] :
-         {std::pair{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK"},
-          std::pair{"PMI_SIZE", "PMI_RANK"},
-          std::pair{"SLURM_NTASKS", "SLURM_PROCID"}})
-      if (const char *n = std::getenv(size))
-        {
-          const char *r = std::getenv(rank);
-          return {std::max(1, std::atoi(n)), r ? std::atoi(r) : 0};
-        }
-    return {1, 0};
-  }
-
-  /**
-   * Build the scene's simulation (bad input fails here, before anything is
-   * written), start MPI if it needs it (one thread either way), let the
-   * simulation prepare what may still refuse the input, prepare the run
-   * folder and the log, run. Returns false if the run was interrupted by
-   * a signal.
-   */
-  bool
-  run(const rsfcycle::Parameters                              &parameters,
-      dealii::ParameterHandler                                &prm,
-      const bool                                               resume,
-      std::optional<dealii::Utilities::MPI::MPI_InitFinalize> &mpi,
-      int                                                     &argc,
-      char                                                  **&argv)
-  {
-    const auto simulation = rsfcycle::scenes::make_simulation(parameters, prm);
-    const unsigned int n_processes = launched_processes().first;
-    if (!simulation->needs_mpi() && n_processes > 1)
-      throw std::invalid_argument(
-        "Scene = " + parameters.run.scene + " runs on one MPI rank, not on " +
-        std::to_string(n_processes) + ": start it without mpirun");
-    if (simulation->needs_mpi())
-      mpi.emplace(argc, argv, 1);
-    else
-      dealii::MultithreadInfo::set_thread_limit(1);
-    if (n_processes > 1 &&
-        parameters.solver.linear_correction ==
-          rsfcycle::SolverParameters::LinearCorrection::direct)
-      throw std::invalid_argument(
-        "Solver/Linear correction = direct runs on one MPI rank, not on " +
-        std::to_string(n_processes) +
-        ": choose multigrid or amg, or start it without mpirun");
-    if (n_processes > 1 && parameters.solver.direct_fallback)
-      throw std::invalid_argument(
-        "Solver/Direct fallback = true runs on one MPI rank, not on " +
-        std::to_string(n_processes) + ": set it false, or start it without " +
-        "mpirun");
-    simulation->prepare(resume);
-    // The first rank prepares the folder and writes the log; every rank
-    // learns whether the folder was refused.
-    const bool root = rsfcycle::output::is_root();
-    if (!resume)
-      {
-        std::string refused;
-        if (root)
-          try
-            {
-              prepare_output_directory(parameters.run.output_directory,
-                                       parameters.run.overwrite_output);
-            }
-          catch (const std::invalid_argument &error)
-            {
-              refused = error.what();
-            }
-        if (mpi)
-          refused = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, refused);
-        if (!refused.empty())
-          throw std::invalid_argument(refused);
-      }
-    LogBuffer    buffer(std::cout.rdbuf(),
-                     parameters.run.output_directory + "/log.txt",
-                     resume);
-    NullBuffer   nothing;
-    std::ostream log(root ? static_cast<std::streambuf *>(&buffer) : &nothing);
-    log.exceptions(std::ios::badbit);
-    const bool completed = simulation->run(prm, log, resume);
-    log.flush();
-    return completed;
-  }
 } // namespace
 
 
@@ -314,7 +122,7 @@ main(int argc, char **argv)
   try
     {
       dealii::ParameterHandler prm;
-      rsfcycle::scenes::declare_parameters(prm);
+      rsfcycle::app::declare_parameters(prm);
 
       std::string file, resume_dir;
       bool        force = false;
@@ -358,7 +166,7 @@ main(int argc, char **argv)
         throw std::invalid_argument("parameter file " + file +
                                     " does not exist");
 
-      rsfcycle::scenes::parse_parameter_file(prm, file);
+      rsfcycle::app::parse_parameter_file(prm, file);
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);
       if (force)
@@ -366,13 +174,13 @@ main(int argc, char **argv)
       const bool resume = !resume_dir.empty();
       if (resume)
         parameters.run.output_directory = resume_dir;
-      if (!run(parameters, prm, resume, mpi, argc, argv))
+      if (!rsfcycle::app::run(parameters, prm, resume, mpi, argc, argv))
         return 130;
     }
   catch (std::exception &exc)
     {
       // every process fails alike; one line from the first
-      if (launched_processes().second == 0)
+      if (rsfcycle::app::launched_processes().second == 0)
         std::cerr << "rsfcycle: error: " << one_line(exc.what()) << std::endl;
       return 1;
     }

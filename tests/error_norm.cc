@@ -15,7 +15,7 @@
 #include "tests.h"
 
 #include <deal.II/base/mpi.h>
-#include <rsfcycle/problem_base.h>
+#include <rsfcycle/models/problem_base.h>
 
 void
 check(const std::string &norm)

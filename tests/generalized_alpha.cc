@@ -48,7 +48,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
-#include <rsfcycle/problem_base.h>
+#include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/time/generalized_alpha_scheme.h>
 #include <rsfcycle/time/schemes.h>
 #include <vector>

@@ -35,7 +35,8 @@
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/app/simulation.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -55,7 +56,7 @@ namespace
   {
     const std::string        source = SOURCE_DIR;
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input(source + "/meshes/box-fault-3d.prm");
     prm.parse_input_from_string(
       "set Output directory = " + dir +

@@ -16,10 +16,11 @@
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/global_system.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -31,8 +32,8 @@ main(int argc, char **argv)
   initlog(6);
   const std::string        source = SOURCE_DIR;
   dealii::ParameterHandler prm;
-  scenes::declare_parameters(prm);
-  scenes::parse_parameter_file(prm, source + "/../prm/seas-bp1-qd.prm");
+  app::declare_parameters(prm);
+  app::parse_parameter_file(prm, source + "/../prm/seas-bp1-qd.prm");
   prm.parse_input_from_string("set Output directory = output-body\n"
                               "subsection Mesh\n"
                               "  set Local refinements = 3\n"

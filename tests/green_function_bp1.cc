@@ -31,7 +31,8 @@
 #include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/app/simulation.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -49,7 +50,7 @@ namespace
   {
     const std::string        source = SOURCE_DIR;
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
     prm.parse_input_from_string(
       "set Output directory = " + dir +

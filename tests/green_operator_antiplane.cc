@@ -37,9 +37,10 @@
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 
 using namespace rsfcycle;
 
@@ -51,7 +52,7 @@ main(int argc, char **argv)
   const std::string source = SOURCE_DIR;
 
   dealii::ParameterHandler prm;
-  scenes::declare_parameters(prm);
+  app::declare_parameters(prm);
   prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
   prm.parse_input_from_string("set Output directory = output-run\n"
                               "subsection Mesh file\n"

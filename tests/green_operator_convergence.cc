@@ -22,9 +22,10 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <map>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 
 using namespace rsfcycle;
 
@@ -38,7 +39,7 @@ namespace
             bool              &symmetric)
   {
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
     prm.parse_input_from_string(
       std::string("set Output directory = output-run\n") +

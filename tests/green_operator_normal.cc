@@ -27,9 +27,10 @@
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 
 using namespace rsfcycle;
 
@@ -43,7 +44,7 @@ namespace
   {
     const std::string        source = SOURCE_DIR;
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input_from_string(
       "set Dimension = 2\n"
       "set Scene = mesh-file\n"

@@ -32,7 +32,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <rsfcycle/ids.h>
-#include <rsfcycle/problem_base.h>
+#include <rsfcycle/models/problem_base.h>
 
 using namespace dealii;
 using namespace rsfcycle;

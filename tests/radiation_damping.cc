@@ -20,8 +20,8 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/physics/discretisation.h>
-#include <rsfcycle/problem_base.h>
 
 void
 check(const double material_scale, const double expected_eta)

@@ -29,10 +29,11 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/discretisation.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <rsfcycle/scenes/wedge.h>
 #include <set>
 
@@ -158,7 +159,7 @@ check_zone(const std::string &zone, const std::string &label)
 {
   const std::string source = SOURCE_DIR;
   ParameterHandler  prm;
-  scenes::declare_parameters(prm);
+  app::declare_parameters(prm);
   prm.parse_input_from_string(
     "set Dimension = 2\n"
     "set Scene = mesh-file\n"

@@ -6,10 +6,11 @@
 #define rsfcycle_tests_run_model_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
+#include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/problem_base.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 template <int dim>

@@ -76,8 +76,8 @@ main(int argc, char **argv)
   initlog(6);
   const std::string        source = SOURCE_DIR;
   dealii::ParameterHandler prm;
-  scenes::declare_parameters(prm);
-  scenes::parse_parameter_file(prm, source + "/../prm/seas-bp5-qd.prm");
+  app::declare_parameters(prm);
+  app::parse_parameter_file(prm, source + "/../prm/seas-bp5-qd.prm");
   std::filesystem::remove_all("bp5-run"); // (the files of an earlier run)
   prm.parse_input_from_string("set Output directory = bp5-run\n"
                               "set Overwrite output = true\n"

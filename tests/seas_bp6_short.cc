@@ -31,9 +31,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -76,9 +77,9 @@ namespace
   {
     const std::string        source = SOURCE_DIR;
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     // (the .prm's include and mesh file resolved beside it)
-    scenes::parse_parameter_file(prm, source + "/../prm/" + prm_file);
+    app::parse_parameter_file(prm, source + "/../prm/" + prm_file);
     std::filesystem::remove_all(dir); // (the files of an earlier run)
     prm.parse_input_from_string("set Output directory = " + dir +
                                 "\n"

@@ -44,7 +44,7 @@ namespace
   {
     const std::string        source = SOURCE_DIR;
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input(source + "/meshes/box-creep-3d.prm");
     prm.parse_input_from_string(
       "set Output directory = " + dir +

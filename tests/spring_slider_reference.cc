@@ -15,9 +15,10 @@
 #include "tests.h"
 
 #include <cmath>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -32,7 +33,7 @@ namespace
     std::ostringstream tol;
     tol << tolerance;
     ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input_from_string(
       "set Scene = spring-slider\n"
       "set End time = 1000\n"

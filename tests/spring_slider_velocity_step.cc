@@ -22,9 +22,10 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 using namespace rsfcycle;
@@ -39,7 +40,7 @@ main()
   for (const std::string law : {"ageing", "slip"})
     {
       ParameterHandler prm;
-      scenes::declare_parameters(prm);
+      app::declare_parameters(prm);
       prm.parse_input_from_string(
         "set Scene = spring-slider\n"
         "set End time = 21\n"

@@ -61,7 +61,7 @@ namespace
   {
     const std::string        source = SOURCE_DIR;
     dealii::ParameterHandler prm;
-    scenes::declare_parameters(prm);
+    app::declare_parameters(prm);
     prm.parse_input(source + "/../prm/seas-bp1-qd.prm");
     prm.parse_input_from_string(
       "set Output directory = " + dir +

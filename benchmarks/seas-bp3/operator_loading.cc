@@ -115,8 +115,8 @@ main(int argc, char **argv)
         throw std::invalid_argument("DIP: between 0 and 90 degrees");
 
       dealii::ParameterHandler prm;
-      scenes::declare_parameters(prm);
-      scenes::parse_parameter_file(prm, argv[1]);
+      app::declare_parameters(prm);
+      app::parse_parameter_file(prm, argv[1]);
       if (argc >= 5)
         {
           prm.enter_subsection("Mesh");

@@ -51,14 +51,14 @@ namespace rsfcycle
   {
     unsigned int dimension = 2;
     bool         antiplane = false; // Displacement = antiplane
-    /** The scene's name; scenes/registry.h makes the scene of a name. */
+    /** The scene's name; scenes/scenes.h makes the scene of a name. */
     std::string  scene             = "wedge";
     double       end_time          = 1000;
     unsigned int stop_after_events = 0;
     std::string  output_directory  = "output";
     bool         overwrite_output  = false;
 
-    /** `Scene` is declared with the names of the registry's scenes. */
+    /** `Scene` is declared with the names of scenes/scenes.h. */
     static void
     declare_parameters(ParameterHandler &prm, const std::string &scene_names);
     void
@@ -257,7 +257,7 @@ namespace rsfcycle
 
     /**
      * Declare every entry but the scenes' subsections (declared by
-     * scenes::declare_parameters(), which calls this function with the
+     * app::declare_parameters(), which calls this function with the
      * names of its scenes).
      */
     static void

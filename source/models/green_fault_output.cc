@@ -6,6 +6,7 @@
 #include <cmath>
 #include <rsfcycle/format.h>
 #include <rsfcycle/models/contact_layout.h>
+#include <rsfcycle/models/continuum.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/physics/split_fault.h>
@@ -96,20 +97,15 @@ namespace rsfcycle
     output::Offer
     GreenFault<dim>::offer()
     {
-      output::Offer offer;
-      offer.model = "the Green's-function method";
-      offer.fields.push_back(output::Field::body);
-      offer.body =
-        output::BodySource<dim>{&discretisation,
-                                &contact,
-                                parameters.solver.law.get(),
-                                scene.convergence_rate(),
-                                scene.output_frame(),
-                                &timer,
-                                [this](const output::Record &record) {
-                                  return body(record.state_as<State>());
-                                }};
-      return offer;
+      return continuum_offer("the Green's-function method",
+                             parameters,
+                             scene,
+                             discretisation,
+                             contact,
+                             timer,
+                             [this](const output::Record &record) {
+                               return body(record.state_as<State>());
+                             });
     }
 
 
@@ -224,14 +220,8 @@ namespace rsfcycle
     void
     GreenFault<dim>::describe(std::ostream &log) const
     {
-      const auto &tria = discretisation.triangulation;
-      log << "Scene: " << parameters.run.scene << " (" << dim << "D"
-          << (parameters.run.antiplane ? ", antiplane" : "") << ")\n"
-          << "Mesh: " << tria.n_global_active_cells() << " cells, "
-          << tria.n_global_levels() << " levels, "
-          << discretisation.dof_handler.n_dofs() << " unknowns, "
-          << contact.n_global_nodes() << " contact nodes\n"
-          << "Bulk: green-function, operator " << op.n_contact() << " x "
+      describe_scene(log, parameters, discretisation, contact);
+      log << "Bulk: green-function, operator " << op.n_contact() << " x "
           << op.n_contact();
       if (op.is_compressed())
         log << " as an H-matrix (tolerance "

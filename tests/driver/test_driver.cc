@@ -20,11 +20,12 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <rsfcycle/app/simulation.h>
+#include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/parameters.h>
-#include <rsfcycle/problem_base.h>
-#include <rsfcycle/scenes/registry.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <sstream>
 
 namespace
@@ -278,8 +279,8 @@ main(int argc, char **argv)
       if (argc != 2)
         throw std::invalid_argument("usage: rsfcycle_test_driver FILE.prm");
       dealii::ParameterHandler prm;
-      rsfcycle::scenes::declare_parameters(prm);
-      rsfcycle::scenes::parse_parameter_file(prm, argv[1]);
+      rsfcycle::app::declare_parameters(prm);
+      rsfcycle::app::parse_parameter_file(prm, argv[1]);
       rsfcycle::Parameters parameters;
       parameters.parse_parameters(prm);
 

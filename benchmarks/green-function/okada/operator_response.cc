@@ -37,8 +37,8 @@ main(int argc, char **argv)
       const double z1 = std::stod(argv[5]), z2 = std::stod(argv[6]);
 
       dealii::ParameterHandler prm;
-      scenes::declare_parameters(prm);
-      scenes::parse_parameter_file(prm, argv[1]);
+      app::declare_parameters(prm);
+      app::parse_parameter_file(prm, argv[1]);
       prm.enter_subsection("Mesh");
       prm.set("Local refinements", std::string(argv[2]));
       prm.leave_subsection();

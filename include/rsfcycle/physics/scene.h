@@ -45,8 +45,8 @@ namespace rsfcycle
      * generic solver (ExaDG's split of scenario and solver). The geometry is
      * given in the rotated frame of doc/model.md §1: the base (boundary id
      * `contact`) lies in y = 0 and the body above it. Adding a scene never
-     * touches the solver: it is a class in scenes/ and a line in
-     * scenes/registry.cc.
+     * touches the solver: it is a class in scenes/ and a line in each
+     * function of scenes/scenes.cc.
      */
     template <int dim>
     class Scene

@@ -100,24 +100,23 @@ namespace rsfcycle
         "--resume " + dir +
         ": this integrator writes no checkpoints; start the run anew");
     LoopState &s = *loop_state;
-    output::read_checkpoint(
-      dir,
-      model.checkpoint_identity(),
-      [&](boost::archive::binary_iarchive &ar) {
-        ar >> s;
-        std::vector<std::string> names;
-        for (const auto &writer : writers)
-          names.push_back(writer->name());
-        if (names != s.writer_names)
-          throw std::invalid_argument(
-            dir + "/checkpoint.bin: written with " +
-            std::to_string(s.writer_names.size()) +
-            " outputs, parameters.prm asks for " +
-            std::to_string(names.size()) +
-            " (was Output/Writers changed?)");
-        for (const auto &writer : writers)
-          writer->load(ar);
-      });
+    output::read_checkpoint(dir,
+                            model.checkpoint_identity(),
+                            [&](boost::archive::binary_iarchive &ar) {
+                              ar >> s;
+                              std::vector<std::string> names;
+                              for (const auto &writer : writers)
+                                names.push_back(writer->name());
+                              if (names != s.writer_names)
+                                throw std::invalid_argument(
+                                  dir + "/checkpoint.bin: written with " +
+                                  std::to_string(s.writer_names.size()) +
+                                  " outputs, parameters.prm asks for " +
+                                  std::to_string(names.size()) +
+                                  " (was Output/Writers changed?)");
+                              for (const auto &writer : writers)
+                                writer->load(ar);
+                            });
     // drop what was written after the checkpoint (the first rank writes
     // the files); every file is checked before one is cut
     std::vector<std::string> paths;

@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#ifndef rsfcycle_scenes_registry_h
-#define rsfcycle_scenes_registry_h
+#ifndef rsfcycle_app_simulation_h
+#define rsfcycle_app_simulation_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/scene.h>
 #include <string>
+#include <utility>
 
 namespace rsfcycle
 {
-  namespace scenes
+  namespace app
   {
     using namespace dealii;
     using physics::Scene;
@@ -19,19 +22,17 @@ namespace rsfcycle
     using dealii::ParameterHandler;
 
     /**
-     * The scenes by name (a plain name-to-factory map). A new scene is a
-     * class in scenes/ and one line in each function of
-     * scenes/registry.cc; nothing outside scenes/ changes.
+     * The composition root of a run: every subsection's parameters, the
+     * rules that involve more than one entry (Parameters::validate when the
+     * file is parsed; here those that also need the scene, the model or the
+     * number of MPI ranks), the choice of the model and the run itself.
+     * main.cc parses the command line and calls run().
      */
-
-    /** Names of the scenes, as a Patterns::Selection. */
-    std::string
-    scene_names();
 
     /**
      * Declare every parameter of the program: Parameters (with the names of
-     * the scenes, integrators and time schemes) and the subsection of every
-     * scene.
+     * the scenes, time schemes and writers), the subsection of every scene
+     * and the spring-slider's.
      */
     void
     declare_parameters(ParameterHandler &prm);
@@ -44,14 +45,6 @@ namespace rsfcycle
      */
     void
     parse_parameter_file(ParameterHandler &prm, const std::string &file);
-
-    /**
-     * The continuum scene (geometry, materials, friction) of the given name,
-     * reading its subsection of prm; run by ProblemBase.
-     */
-    template <int dim>
-    std::unique_ptr<Scene<dim>>
-    make_scene(const std::string &name, ParameterHandler &prm);
 
     /** A configured run of one scene, built before anything is written. */
     class Simulation
@@ -97,7 +90,32 @@ namespace rsfcycle
      */
     std::unique_ptr<Simulation>
     make_simulation(const Parameters &parameters, ParameterHandler &prm);
-  } // namespace scenes
+
+    /**
+     * The number of processes and this process's rank as the MPI launcher
+     * (Open MPI's mpirun, or a PMI launcher such as MPICH's or Slurm's) set
+     * them in the environment, known before MPI is started (the spring-slider
+     * never starts it); 1 and 0 without a launcher.
+     */
+    std::pair<unsigned int, unsigned int>
+    launched_processes();
+
+    /**
+     * Build the scene's simulation (bad input fails here, before anything is
+     * written), check what depends on the number of MPI ranks, start MPI if
+     * the simulation needs it (one thread either way), let the simulation
+     * prepare what may still refuse the input, prepare the run folder and
+     * the log (log.txt: the screen's lines), run. `mpi` holds MPI once it is
+     * started. Returns false if the run was interrupted by a signal.
+     */
+    bool
+    run(const Parameters                                        &parameters,
+        ParameterHandler                                        &prm,
+        bool                                                     resume,
+        std::optional<dealii::Utilities::MPI::MPI_InitFinalize> &mpi,
+        int                                                     &argc,
+        char                                                  **&argv);
+  } // namespace app
 } // namespace rsfcycle
 
 #endif

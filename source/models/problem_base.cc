@@ -7,11 +7,12 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/ids.h>
 #include <rsfcycle/models/contact_layout.h>
+#include <rsfcycle/models/continuum.h>
+#include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/physics/global_system.h>
 #include <rsfcycle/physics/split_fault.h>
-#include <rsfcycle/problem_base.h>
 #include <rsfcycle/simulator/simulator.templates.h>
 #include <rsfcycle/solvers/amg_correction.h>
 #include <rsfcycle/solvers/direct_correction.h>
@@ -488,17 +489,13 @@ namespace rsfcycle
           }
         return state;
       };
-    output::Offer offer;
-    offer.model = "the volume method";
-    offer.fields.push_back(output::Field::body);
-    offer.body = output::BodySource<dim>{&discretisation,
-                                         &contact,
-                                         parameters.solver.law.get(),
-                                         scene.convergence_rate(),
-                                         scene.output_frame(),
-                                         &timer,
-                                         body};
-    return offer;
+    return models::continuum_offer("the volume method",
+                                   parameters,
+                                   scene,
+                                   discretisation,
+                                   contact,
+                                   timer,
+                                   body);
   }
 
 
@@ -507,12 +504,7 @@ namespace rsfcycle
   ProblemBase<dim>::describe(std::ostream &log) const
   {
     const auto &tria = discretisation.triangulation;
-    log << "Scene: " << parameters.run.scene << " (" << dim << "D"
-        << (parameters.run.antiplane ? ", antiplane" : "") << ")\n"
-        << "Mesh: " << tria.n_global_active_cells() << " cells, "
-        << tria.n_global_levels() << " levels, "
-        << discretisation.dof_handler.n_dofs() << " unknowns, "
-        << contact.n_global_nodes() << " contact nodes\n";
+    models::describe_scene(log, parameters, discretisation, contact);
     double h_min = 1e300, h_max = 0;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())

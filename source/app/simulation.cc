@@ -1,36 +1,30 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <rsfcycle/app/simulation.h>
 #include <rsfcycle/models/green_fault.h>
+#include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/models/spring_slider.h>
 #include <rsfcycle/output/writers.h>
 #include <rsfcycle/parameter_file.h>
-#include <rsfcycle/problem_base.h>
-#include <rsfcycle/scenes/mesh_file.h>
-#include <rsfcycle/scenes/registry.h>
-#include <rsfcycle/scenes/wedge.h>
+#include <rsfcycle/scenes/scenes.h>
 #include <rsfcycle/time/integrators.h>
 #include <rsfcycle/time/schemes.h>
 #include <stdexcept>
 
 namespace rsfcycle
 {
-  namespace scenes
+  namespace app
   {
-    std::string
-    scene_names()
-    {
-      return "wedge|mesh-file|spring-slider";
-    }
+    using physics::Scene;
 
 
     void
     declare_parameters(ParameterHandler &prm)
     {
       Parameters::declare_parameters(prm,
-                                     scene_names(),
+                                     scenes::scene_names(),
                                      time::scheme_names(),
                                      output::writer_names());
-      Wedge<2>::declare_parameters(prm);
-      MeshFile<2>::declare_parameters(prm);
+      scenes::declare_parameters(prm);
       models::SpringSlider::declare_parameters(prm);
     }
 
@@ -42,19 +36,6 @@ namespace rsfcycle
       // scene with a new file entry adds it here.
       rsfcycle::parse_parameter_file(
         prm, file, {{"Mesh file", "File"}, {"Solver", "Green operator file"}});
-    }
-
-
-    template <int dim>
-    std::unique_ptr<Scene<dim>>
-    make_scene(const std::string &name, ParameterHandler &prm)
-    {
-      if (name == "wedge")
-        return std::make_unique<Wedge<dim>>(prm);
-      if (name == "mesh-file")
-        return std::make_unique<MeshFile<dim>>(prm);
-      throw std::invalid_argument("Scene = " + name + ": allowed are " +
-                                  scene_names());
     }
 
 
@@ -70,7 +51,7 @@ namespace rsfcycle
       public:
         ContinuumSimulation(const Parameters &parameters, ParameterHandler &prm)
           : parameters(parameters)
-          , scene(make_scene<dim>(parameters.run.scene, prm))
+          , scene(scenes::make_scene<dim>(parameters.run.scene, prm))
         {
           output::check_writers(parameters,
                                 {output::Field::contact,
@@ -200,9 +181,5 @@ namespace rsfcycle
     }
 
 
-    template std::unique_ptr<Scene<2>>
-    make_scene<2>(const std::string &, ParameterHandler &);
-    template std::unique_ptr<Scene<3>>
-    make_scene<3>(const std::string &, ParameterHandler &);
-  } // namespace scenes
+  } // namespace app
 } // namespace rsfcycle

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#ifndef rsfcycle_problem_base_h
-#define rsfcycle_problem_base_h
+#ifndef rsfcycle_models_problem_base_h
+#define rsfcycle_models_problem_base_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <rsfcycle/la.h>
+#include <rsfcycle/models/implicit_step.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/body_state.h>
 #include <rsfcycle/physics/contact_quadrature.h>
@@ -15,7 +16,6 @@
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
 #include <rsfcycle/time/implicit_model.h>
-#include <rsfcycle/models/implicit_step.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/time_scheme.h>
 #include <vector>
@@ -201,7 +201,7 @@ namespace rsfcycle
     std::unique_ptr<solvers::TNNMG>            tnnmg;
     /** The time scheme of the implicit step (`Solver/Time scheme`). */
     const std::unique_ptr<const time::TimeScheme> scheme;
-    std::unique_ptr<models::ImplicitStep<dim>>      implicit_step;
+    std::unique_ptr<models::ImplicitStep<dim>>    implicit_step;
 
     BodyState initial;
     /** Contact nodes with a tensile reaction in the gravity equilibrium. */

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <rsfcycle/app/simulation.h>
+#include <rsfcycle/models/continuum.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/models/spring_slider.h>
@@ -54,10 +55,10 @@ namespace rsfcycle
           , scene(scenes::make_scene<dim>(parameters.run.scene, prm))
         {
           output::check_writers(parameters,
-                                {output::Field::contact,
-                                 output::Field::stresses,
-                                 output::Field::body},
-                                "a continuum scene");
+                                models::continuum_fields(),
+                                green_function() ?
+                                  "the Green's-function method" :
+                                  "the volume method");
           if (green_function())
             models::GreenFault<dim>::check(parameters, *scene);
           else if (scene->split_fault() &&
@@ -143,8 +144,7 @@ namespace rsfcycle
         SpringSliderSimulation(const Parameters &parameters,
                                ParameterHandler &prm)
           : slider((output::check_writers(parameters,
-                                          {output::Field::contact,
-                                           output::Field::stresses},
+                                          output::Offer{}.fields,
                                           "the spring-slider"),
                     parameters),
                    prm)

@@ -33,15 +33,15 @@ namespace rsfcycle
                     std::function<BodyState(const output::Record &)> body)
     {
       output::Offer offer;
-      offer.model = model;
-      offer.fields.push_back(output::Field::body);
-      offer.body = output::BodySource<dim>{&discretisation,
-                                           &contact,
-                                           parameters.solver.law.get(),
-                                           scene.convergence_rate(),
-                                           scene.output_frame(),
-                                           &timer,
-                                           std::move(body)};
+      offer.model  = model;
+      offer.fields = continuum_fields();
+      offer.body   = output::BodySource<dim>{&discretisation,
+                                             &contact,
+                                             parameters.solver.law.get(),
+                                             scene.convergence_rate(),
+                                             scene.output_frame(),
+                                             &timer,
+                                             std::move(body)};
       return offer;
     }
 

@@ -13,6 +13,7 @@
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/scene.h>
 #include <string>
+#include <vector>
 
 namespace rsfcycle
 {
@@ -30,6 +31,18 @@ namespace rsfcycle
                    const Parameters                      &parameters,
                    const physics::Discretisation<dim>    &discretisation,
                    const physics::ContactQuadrature<dim> &contact);
+
+    /**
+     * The fields a continuum model offers the writers (output/writers.h):
+     * the contact's slip and stresses and the body on its mesh.
+     */
+    inline std::vector<output::Field>
+    continuum_fields()
+    {
+      return {output::Field::contact,
+              output::Field::stresses,
+              output::Field::body};
+    }
 
     /**
      * What a continuum model offers the writers (output/writers.h): the

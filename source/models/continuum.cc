@@ -6,14 +6,26 @@ namespace rsfcycle
   namespace models
   {
     template <int dim>
+    Continuum<dim>::Continuum(const Parameters          &parameters,
+                              const physics::Scene<dim> &scene,
+                              std::ostream              &log,
+                              const bool                 radiation_damping)
+      : parameters(parameters)
+      , scene(scene)
+      , log(log)
+      , timer(log, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
+      , discretisation(parameters.mesh,
+                       scene,
+                       {parameters.run.antiplane, radiation_damping})
+    {}
+
+
+    template <int dim>
     void
-    describe_scene(std::ostream                          &log,
-                   const Parameters                      &parameters,
-                   const physics::Discretisation<dim>    &discretisation,
-                   const physics::ContactQuadrature<dim> &contact)
+    Continuum<dim>::describe_scene(std::ostream &out) const
     {
       const auto &tria = discretisation.triangulation;
-      log << "Scene: " << parameters.run.scene << " (" << dim << "D"
+      out << "Scene: " << parameters.run.scene << " (" << dim << "D"
           << (parameters.run.antiplane ? ", antiplane" : "") << ")\n"
           << "Mesh: " << tria.n_global_active_cells() << " cells, "
           << tria.n_global_levels() << " levels, "
@@ -24,13 +36,9 @@ namespace rsfcycle
 
     template <int dim>
     output::Offer
-    continuum_offer(const std::string                     &model,
-                    const Parameters                      &parameters,
-                    const physics::Scene<dim>             &scene,
-                    const physics::Discretisation<dim>    &discretisation,
-                    const physics::ContactQuadrature<dim> &contact,
-                    dealii::TimerOutput                   &timer,
-                    std::function<BodyState(const output::Record &)> body)
+    Continuum<dim>::continuum_offer(
+      const std::string                               &model,
+      std::function<BodyState(const output::Record &)> body)
     {
       output::Offer offer;
       offer.model  = model;
@@ -46,31 +54,7 @@ namespace rsfcycle
     }
 
 
-    template void
-    describe_scene<2>(std::ostream &,
-                      const Parameters &,
-                      const physics::Discretisation<2> &,
-                      const physics::ContactQuadrature<2> &);
-    template void
-    describe_scene<3>(std::ostream &,
-                      const Parameters &,
-                      const physics::Discretisation<3> &,
-                      const physics::ContactQuadrature<3> &);
-    template output::Offer
-    continuum_offer<2>(const std::string &,
-                       const Parameters &,
-                       const physics::Scene<2> &,
-                       const physics::Discretisation<2> &,
-                       const physics::ContactQuadrature<2> &,
-                       dealii::TimerOutput &,
-                       std::function<BodyState(const output::Record &)>);
-    template output::Offer
-    continuum_offer<3>(const std::string &,
-                       const Parameters &,
-                       const physics::Scene<3> &,
-                       const physics::Discretisation<3> &,
-                       const physics::ContactQuadrature<3> &,
-                       dealii::TimerOutput &,
-                       std::function<BodyState(const output::Record &)>);
+    template class Continuum<2>;
+    template class Continuum<3>;
   } // namespace models
 } // namespace rsfcycle

@@ -71,11 +71,7 @@ namespace rsfcycle
     GreenFault<dim>::GreenFault(const Parameters          &parameters,
                                 const physics::Scene<dim> &scene,
                                 std::ostream              &log)
-      : parameters(parameters)
-      , scene(scene)
-      , log(log)
-      , timer(log, TimerOutput::never, TimerOutput::wall_times)
-      , discretisation(parameters.mesh, scene, {parameters.run.antiplane, true})
+      : Continuum<dim>(parameters, scene, log, true)
       , communicator(discretisation.triangulation.get_communicator())
       , scheme(time::make_scheme(parameters.solver, false))
       , fault_solver(parameters.solver.max_tnnmg_iterations,

@@ -97,15 +97,10 @@ namespace rsfcycle
     output::Offer
     GreenFault<dim>::offer()
     {
-      return continuum_offer("the Green's-function method",
-                             parameters,
-                             scene,
-                             discretisation,
-                             contact,
-                             timer,
-                             [this](const output::Record &record) {
-                               return body(record.state_as<State>());
-                             });
+      return this->continuum_offer("the Green's-function method",
+                                   [this](const output::Record &record) {
+                                     return body(record.state_as<State>());
+                                   });
     }
 
 
@@ -220,7 +215,7 @@ namespace rsfcycle
     void
     GreenFault<dim>::describe(std::ostream &log) const
     {
-      describe_scene(log, parameters, discretisation, contact);
+      this->describe_scene(log);
       log << "Bulk: green-function, operator " << op.n_contact() << " x "
           << op.n_contact();
       if (op.is_compressed())

@@ -25,15 +25,11 @@ namespace rsfcycle
   ProblemBase<dim>::ProblemBase(const Parameters          &parameters,
                                 const physics::Scene<dim> &scene,
                                 std::ostream              &log)
-    : parameters(parameters)
-    , scene(scene)
-    , log(log)
-    , timer(log, TimerOutput::never, TimerOutput::wall_times)
-    , discretisation(parameters.mesh,
-                     scene,
-                     {parameters.run.antiplane,
-                      parameters.solver.dynamics ==
-                        SolverParameters::Dynamics::quasi_dynamic})
+    : models::Continuum<dim>(parameters,
+                             scene,
+                             log,
+                             parameters.solver.dynamics ==
+                               SolverParameters::Dynamics::quasi_dynamic)
     , scheme(time::make_scheme(parameters.solver,
                                parameters.solver.dynamics ==
                                  SolverParameters::Dynamics::dynamic))
@@ -65,10 +61,10 @@ namespace rsfcycle
   namespace
   {
     /**
-     * Geometric multigrid on the levels of the discretisation: the
-     * Dirichlet components of backstop, creep, base normal and free-slip
-     * walls, the contact vertices with their lumped weights, and the level
-     * cell matrices of the discretisation.
+     * Geometric multigrid on the levels of the discretisation: its
+     * prescribed components held at zero, the contact vertices with their
+     * lumped weights, the level cell matrices and the step matrix's
+     * coefficients of the time scheme.
      */
     template <int dim>
     std::unique_ptr<solvers::LinearCorrection>
@@ -78,66 +74,10 @@ namespace rsfcycle
                    const time::TimeScheme                 &scheme,
                    const solvers::LinearCorrectionControl &control)
     {
-      using MG                        = solvers::MultigridCorrection<dim>;
-      const unsigned int n_components = discretisation.fe.n_components();
-      std::vector<typename MG::DirichletBoundary> dirichlet = {
-        {boundary_id::backstop, ComponentMask(n_components, true)},
-        {boundary_id::backstop_opposite, ComponentMask(n_components, true)}};
-      // creep: all but a free normal component
-      std::vector<bool> creep(n_components, true);
-      if (discretisation.normal_component() < n_components &&
-          discretisation.held_contact_component() >= n_components)
-        creep[discretisation.normal_component()] = false;
-      dirichlet.push_back({boundary_id::creep, ComponentMask(creep)});
-      for (const auto &[id, component] :
-           {std::make_pair(boundary_id::contact,
-                           discretisation.held_contact_component()),
-            std::make_pair(boundary_id::lateral,
-                           discretisation.lateral_component()),
-            std::make_pair(boundary_id::parallel,
-                           discretisation.normal_component())})
-        if (component < n_components)
-          {
-            std::vector<bool> mask(n_components, false);
-            mask[component] = true;
-            dirichlet.push_back({id, ComponentMask(mask)});
-          }
-
-      // The contact nodes of all ranks, rank by rank: position, lumped
-      // weight and the components of their dofs.
-      const auto &partitioner = *discretisation.partitioner;
-      std::map<types::global_dof_index, unsigned int> component_of_dof;
-      for (const auto &cell :
-           discretisation.dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == boundary_id::contact)
-              for (const unsigned int v : cell->face(f)->vertex_indices())
-                for (unsigned int c = 0; c < n_components; ++c)
-                  component_of_dof[cell->face(f)->vertex_dof_index(v, c)] = c;
-      const auto &nodes = contact.contact_set().nodes;
-      std::vector<typename MG::ContactVertex> vertices(nodes.size());
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          vertices[k].position     = contact.nodes()[k].position;
-          vertices[k].weight       = contact.nodes()[k].weight;
-          vertices[k].n_components = nodes[k].n_dofs;
-          for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
-            vertices[k].components[l] = component_of_dof.at(
-              partitioner.local_to_global(nodes[k].dofs[l]));
-        }
-      if (Utilities::MPI::n_mpi_processes(partitioner.get_mpi_communicator()) >
-          1)
-        {
-          const auto parts =
-            Utilities::MPI::all_gather(partitioner.get_mpi_communicator(),
-                                       vertices);
-          vertices.clear();
-          for (const auto &part : parts)
-            vertices.insert(vertices.end(), part.begin(), part.end());
-        }
-
+      using MG = solvers::MultigridCorrection<dim>;
+      std::vector<typename MG::DirichletBoundary> dirichlet;
+      for (const auto &[id, mask] : discretisation.prescribed_components())
+        dirichlet.push_back({id, mask});
       const auto       &fe = discretisation.fe;
       const QGauss<dim> quadrature(fe.degree + 1);
       auto              fe_values = std::make_shared<FEValues<dim>>(
@@ -159,14 +99,13 @@ namespace rsfcycle
       typename MG::Settings settings;
       settings.smoothing_steps = solver.smoothing_steps;
       settings.control         = control;
-      auto mg = std::make_unique<MG>(discretisation.dof_handler,
-                                     dirichlet,
-                                     boundary_id::contact,
-                                     vertices,
-                                     level_cell_matrices,
-                                     coefficients,
-                                     settings);
-      return mg;
+      return std::make_unique<MG>(discretisation.dof_handler,
+                                  dirichlet,
+                                  boundary_id::contact,
+                                  contact.multigrid_vertices(),
+                                  level_cell_matrices,
+                                  coefficients,
+                                  settings);
     }
   } // namespace
 
@@ -489,13 +428,7 @@ namespace rsfcycle
           }
         return state;
       };
-    return models::continuum_offer("the volume method",
-                                   parameters,
-                                   scene,
-                                   discretisation,
-                                   contact,
-                                   timer,
-                                   body);
+    return this->continuum_offer("the volume method", body);
   }
 
 
@@ -504,7 +437,7 @@ namespace rsfcycle
   ProblemBase<dim>::describe(std::ostream &log) const
   {
     const auto &tria = discretisation.triangulation;
-    models::describe_scene(log, parameters, discretisation, contact);
+    this->describe_scene(log);
     double h_min = 1e300, h_max = 0;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())

@@ -253,6 +253,30 @@ namespace rsfcycle
     }
 
 
+    template <int dim>
+    std::vector<typename solvers::MultigridCorrection<dim>::ContactVertex>
+    ContactQuadrature<dim>::multigrid_vertices() const
+    {
+      std::vector<typename solvers::MultigridCorrection<dim>::ContactVertex>
+        vertices(node_info.size());
+      for (unsigned int k = 0; k < node_info.size(); ++k)
+        {
+          vertices[k].position     = node_info[k].position;
+          vertices[k].weight       = node_info[k].weight;
+          vertices[k].n_components = contact.nodes[k].n_dofs;
+          vertices[k].components   = node_info[k].components;
+        }
+      if (n_ranks == 1)
+        return vertices;
+      std::vector<typename solvers::MultigridCorrection<dim>::ContactVertex>
+        all;
+      for (const auto &part :
+           Utilities::MPI::all_gather(communicator, vertices))
+        all.insert(all.end(), part.begin(), part.end());
+      return all;
+    }
+
+
     template class ContactQuadrature<2>;
     template class ContactQuadrature<3>;
   } // namespace physics

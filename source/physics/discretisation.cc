@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -182,9 +183,7 @@ namespace rsfcycle
                     const unsigned int i = local_index(dof);
                     // creep: the tangential components as on the backstop,
                     // the normal one as on the contact
-                    if (id == boundary_id::backstop ||
-                        id == boundary_id::backstop_opposite ||
-                        (id == boundary_id::creep && c != normal_component()))
+                    if (loaded(id, c))
                       {
                         if (!fixed[i] && partitioner->in_local_range(dof) &&
                             !hanging_constraints.is_constrained(dof))
@@ -194,17 +193,33 @@ namespace rsfcycle
                              id == boundary_id::backstop_opposite ? -1. : 1.});
                         fixed[i] = true;
                       }
-                    else if ((id == boundary_id::lateral &&
-                              c == lateral_component()) ||
-                             (id == boundary_id::parallel &&
-                              c == normal_component()) ||
-                             ((id == boundary_id::contact ||
-                               id == boundary_id::creep) &&
-                              c == held_contact_component()))
+                    else if (prescribed(id, c))
                       fixed[i] = true;
                   }
             }
         }
+    }
+
+
+    template <int dim>
+    std::vector<std::pair<types::boundary_id, ComponentMask>>
+    Discretisation<dim>::prescribed_components() const
+    {
+      std::vector<std::pair<types::boundary_id, ComponentMask>> masks;
+      for (const types::boundary_id id : {boundary_id::backstop,
+                                          boundary_id::backstop_opposite,
+                                          boundary_id::creep,
+                                          boundary_id::contact,
+                                          boundary_id::lateral,
+                                          boundary_id::parallel})
+        {
+          std::vector<bool> mask(fe.n_components());
+          for (unsigned int c = 0; c < mask.size(); ++c)
+            mask[c] = prescribed(id, c);
+          if (std::find(mask.begin(), mask.end(), true) != mask.end())
+            masks.emplace_back(id, ComponentMask(mask));
+        }
+      return masks;
     }
 
 

@@ -20,19 +20,6 @@ namespace rsfcycle
   namespace models
   {
     /**
-     * What the two continuum models (ProblemBase, GreenFault) share of
-     * their description in log.txt: the lines "Scene: NAME (dD[,
-     * antiplane])" and "Mesh: N cells, L levels, U unknowns, C contact
-     * nodes".
-     */
-    template <int dim>
-    void
-    describe_scene(std::ostream                          &log,
-                   const Parameters                      &parameters,
-                   const physics::Discretisation<dim>    &discretisation,
-                   const physics::ContactQuadrature<dim> &contact);
-
-    /**
      * The fields a continuum model offers the writers (output/writers.h):
      * the contact's slip and stresses and the body on its mesh.
      */
@@ -45,20 +32,50 @@ namespace rsfcycle
     }
 
     /**
-     * What a continuum model offers the writers (output/writers.h): the
-     * contact's fields and the body, whose snapshots show the
-     * discretisation's fields in the scene's output frame; `body` makes a
-     * BodyState of a record (empty: the record's state is one).
+     * What the two continuum models (the volume method ProblemBase and the
+     * Green's-function method GreenFault) share: the parameters, the scene
+     * and the log they were made with, the timer of their run, the
+     * discretisation of the scene's body and the contact quadrature on it;
+     * their description's scene and mesh lines and their offer to the
+     * writers.
      */
     template <int dim>
-    output::Offer
-    continuum_offer(const std::string                     &model,
-                    const Parameters                      &parameters,
-                    const physics::Scene<dim>             &scene,
-                    const physics::Discretisation<dim>    &discretisation,
-                    const physics::ContactQuadrature<dim> &contact,
-                    dealii::TimerOutput                   &timer,
-                    std::function<BodyState(const output::Record &)> body);
+    class Continuum
+    {
+    protected:
+      /**
+       * `radiation_damping`: the quasi-dynamic dashpot on the contact in C
+       * (physics::Discretisation::Options).
+       */
+      Continuum(const Parameters          &parameters,
+                const physics::Scene<dim> &scene,
+                std::ostream              &log,
+                bool                       radiation_damping);
+
+      /**
+       * The lines "Scene: NAME (dD[, antiplane])" and "Mesh: N cells, L
+       * levels, U unknowns, C contact nodes" of the description in log.txt.
+       */
+      void
+      describe_scene(std::ostream &out) const;
+
+      /**
+       * The offer to the writers: continuum_fields() and the body, whose
+       * snapshots show the discretisation's fields in the scene's output
+       * frame; `body` makes a BodyState of a record (empty: the record's
+       * state is one). `model` names the method in refusals.
+       */
+      output::Offer
+      continuum_offer(const std::string                               &model,
+                      std::function<BodyState(const output::Record &)> body);
+
+      const Parameters               &parameters;
+      const physics::Scene<dim>      &scene;
+      std::ostream                   &log;
+      mutable dealii::TimerOutput     timer;
+      physics::Discretisation<dim>    discretisation;
+      physics::ContactQuadrature<dim> contact;
+    };
   } // namespace models
 } // namespace rsfcycle
 

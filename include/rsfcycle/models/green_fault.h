@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <rsfcycle/models/continuum.h>
 #include <rsfcycle/output/writer.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/body_state.h>
@@ -89,7 +90,8 @@ namespace rsfcycle
      * at each output time.
      */
     template <int dim>
-    class GreenFault : public time::Model<FaultState>,
+    class GreenFault : public Continuum<dim>,
+                       public time::Model<FaultState>,
                        public time::OdeModel<FaultState>,
                        public time::ImplicitModel<FaultState>
     {
@@ -297,12 +299,13 @@ namespace rsfcycle
       void
       check_compression(double t) const;
 
-      const Parameters            &parameters;
-      const physics::Scene<dim>   &scene;
-      std::ostream                &log;
-      mutable TimerOutput          timer;
-      physics::Discretisation<dim> discretisation;
-      MPI_Comm                     communicator;
+      using Continuum<dim>::parameters;
+      using Continuum<dim>::scene;
+      using Continuum<dim>::log;
+      using Continuum<dim>::timer;
+      using Continuum<dim>::discretisation;
+      using Continuum<dim>::contact;
+      MPI_Comm communicator;
       /**
        * Per rank: its number of contact dofs and the first of them in the
        * state (the dofs of all ranks on every rank, rank by rank; a rank
@@ -316,11 +319,10 @@ namespace rsfcycle
        * Per own node: its first dof among this rank's dofs (one more
        * entry: the number of own dofs).
        */
-      std::vector<unsigned int>       dof_start;
-      physics::ContactQuadrature<dim> contact;
-      physics::GreenOperator          op;
-      double                          setup_seconds = 0;
-      bool                            is_set_up     = false;
+      std::vector<unsigned int> dof_start;
+      physics::GreenOperator    op;
+      double                    setup_seconds = 0;
+      bool                      is_set_up     = false;
       /** The file the operator was read from; empty if computed. */
       std::string   operator_source;
       std::uint32_t fingerprint = 0;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <rsfcycle/la.h>
+#include <rsfcycle/models/continuum.h>
 #include <rsfcycle/models/implicit_step.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/body_state.h>
@@ -46,7 +47,8 @@ namespace rsfcycle
    * implicit (time::ImplicitModel).
    */
   template <int dim>
-  class ProblemBase : public time::Model<BodyState>,
+  class ProblemBase : public models::Continuum<dim>,
+                      public time::Model<BodyState>,
                       public time::ImplicitModel<BodyState>
   {
   public:
@@ -188,13 +190,13 @@ namespace rsfcycle
     void
     compute_initial_state();
 
-    const Parameters          &parameters;
-    const physics::Scene<dim> &scene;
-    std::ostream              &log;
-    TimerOutput                timer;
+    using models::Continuum<dim>::parameters;
+    using models::Continuum<dim>::scene;
+    using models::Continuum<dim>::log;
+    using models::Continuum<dim>::timer;
+    using models::Continuum<dim>::discretisation;
+    using models::Continuum<dim>::contact;
 
-    physics::Discretisation<dim>               discretisation;
-    physics::ContactQuadrature<dim>            contact;
     std::unique_ptr<solvers::LinearCorrection> linear_correction;
     /** Solver/Direct fallback: the direct correction, else null. */
     std::unique_ptr<solvers::LinearCorrection> fallback_correction;

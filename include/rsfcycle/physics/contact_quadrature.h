@@ -12,6 +12,7 @@
 #include <functional>
 #include <rsfcycle/friction/local_solve.h>
 #include <rsfcycle/la.h>
+#include <rsfcycle/solvers/multigrid_correction.h>
 #include <rsfcycle/solvers/spatial_problem.h>
 #include <vector>
 
@@ -147,6 +148,14 @@ namespace rsfcycle
           sorted[k] = all[order[k]];
         return sorted;
       }
+
+      /**
+       * The contact nodes of all ranks, rank by rank, as the geometric
+       * multigrid finds them on its levels: position, lumped weight and the
+       * components of their dofs (collective).
+       */
+      std::vector<typename solvers::MultigridCorrection<dim>::ContactVertex>
+      multigrid_vertices() const;
 
     private:
       solvers::ContactSet   contact;

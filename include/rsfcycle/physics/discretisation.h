@@ -5,6 +5,7 @@
 #include <array>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
@@ -16,6 +17,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <rsfcycle/ids.h>
 #include <rsfcycle/la.h>
 #include <rsfcycle/local_matrix.h>
 #include <rsfcycle/parameters.h>
@@ -219,6 +221,43 @@ namespace rsfcycle
       {
         return fe.n_components() == 3 ? 2 : numbers::invalid_unsigned_int;
       }
+
+      /**
+       * Whether component c of a vertex on boundary `id` moves with the
+       * load (backstop, its opposite, the tangential components of creep):
+       * prescribed, not an unknown.
+       */
+      bool
+      loaded(const types::boundary_id id, const unsigned int c) const
+      {
+        return id == boundary_id::backstop ||
+               id == boundary_id::backstop_opposite ||
+               (id == boundary_id::creep && c != normal_component());
+      }
+
+      /**
+       * Whether component c of a vertex on boundary `id` is prescribed: it
+       * moves with the load (loaded()), or it is held at zero (the lateral
+       * component on free-slip walls, the normal one on parallel walls,
+       * held_contact_component() on the contact and on creep).
+       */
+      bool
+      prescribed(const types::boundary_id id, const unsigned int c) const
+      {
+        return loaded(id, c) ||
+               (id == boundary_id::lateral && c == lateral_component()) ||
+               (id == boundary_id::parallel && c == normal_component()) ||
+               ((id == boundary_id::contact || id == boundary_id::creep) &&
+                c == held_contact_component());
+      }
+
+      /**
+       * The prescribed components of every boundary that has any (as
+       * prescribed() gives them), homogeneous in a correction: what the
+       * geometric multigrid's level matrices hold fixed.
+       */
+      std::vector<std::pair<types::boundary_id, ComponentMask>>
+      prescribed_components() const;
 
       /** For every locally owned dof, its vector component. */
       std::vector<unsigned int>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The checks across entries and subsections of the parameters, after
-// parsing (Parameters::parse_parameters calls validate()): each failure is
+// The checks across entries and subsections of the parameters, the first
+// part of the run's one pass of checks (app::check_run()): each failure is
 // one line naming the entries and what is allowed.
 #include <rsfcycle/format.h>
 #include <rsfcycle/parameters.h>

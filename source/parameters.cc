@@ -588,7 +588,6 @@ namespace rsfcycle
     time_stepping.parse_parameters(prm);
     solver.parse_parameters(prm);
     output.parse_parameters(prm);
-    validate();
   }
 
 } // namespace rsfcycle

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The run of a parsed parameter file: the checks that need the number of
-// MPI ranks, MPI, the run folder and its log, the simulation.
+// The run of a parsed parameter file: MPI, the run folder and its log, the
+// simulation.
 #include <cerrno>
 #include <cstdlib>
 #include <deal.II/base/multithread_info.h>
@@ -145,27 +145,12 @@ namespace rsfcycle
         int                                                     &argc,
         char                                                  **&argv)
     {
-      const auto         simulation  = make_simulation(parameters, prm);
-      const unsigned int n_processes = launched_processes().first;
-      if (!simulation->needs_mpi() && n_processes > 1)
-        throw std::invalid_argument(
-          "Scene = " + parameters.run.scene + " runs on one MPI rank, not on " +
-          std::to_string(n_processes) + ": start it without mpirun");
+      // make_simulation() checks every rule across entries (check_run())
+      const auto simulation = make_simulation(parameters, prm);
       if (simulation->needs_mpi())
         mpi.emplace(argc, argv, 1);
       else
         dealii::MultithreadInfo::set_thread_limit(1);
-      if (n_processes > 1 && parameters.solver.linear_correction ==
-                               SolverParameters::LinearCorrection::direct)
-        throw std::invalid_argument(
-          "Solver/Linear correction = direct runs on one MPI rank, not on " +
-          std::to_string(n_processes) +
-          ": choose multigrid or amg, or start it without mpirun");
-      if (n_processes > 1 && parameters.solver.direct_fallback)
-        throw std::invalid_argument(
-          "Solver/Direct fallback = true runs on one MPI rank, not on " +
-          std::to_string(n_processes) + ": set it false, or start it without " +
-          "mpirun");
       simulation->prepare(resume);
       // The first rank prepares the folder and writes the log; every rank
       // learns whether the folder was refused.

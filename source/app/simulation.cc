@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <rsfcycle/app/checks.h>
 #include <rsfcycle/app/simulation.h>
-#include <rsfcycle/models/continuum.h>
 #include <rsfcycle/models/green_fault.h>
 #include <rsfcycle/models/problem_base.h>
 #include <rsfcycle/models/spring_slider.h>
@@ -54,36 +54,7 @@ namespace rsfcycle
           : parameters(parameters)
           , scene(scenes::make_scene<dim>(parameters.run.scene, prm))
         {
-          output::check_writers(parameters,
-                                models::continuum_fields(),
-                                green_function() ?
-                                  "the Green's-function method" :
-                                  "the volume method");
-          if (green_function())
-            models::GreenFault<dim>::check(parameters, *scene);
-          else if (scene->split_fault() &&
-                   parameters.solver.linear_correction ==
-                     SolverParameters::LinearCorrection::multigrid)
-            throw std::invalid_argument(
-              "Solver/Linear correction: a fault-opposite side (Mesh "
-              "file/Boundary roles) in the volume method needs direct (one "
-              "rank) or amg (the geometric multigrid's levels do not tie the "
-              "two sides yet)");
-          else if (scene->split_fault() && scene->gravity().norm() != 0)
-            throw std::invalid_argument(
-              "Mesh file/Gravity: a fault-opposite side (Boundary roles) "
-              "needs Gravity = 0 (the initial slip of a split fault under "
-              "gravity is not implemented yet)");
-          else if (scene->pore_pressure())
-            throw std::invalid_argument(
-              "Mesh file/Friction/Pore pressure: needs Solver/Bulk = green-function "
-              "(the volume method keeps the normal stress constant in "
-              "time)");
-          else if (scene->shear_perturbation())
-            throw std::invalid_argument(
-              "Mesh file/Friction/Shear stress perturbation: needs "
-              "Solver/Bulk = green-function (the volume method's shear "
-              "prestress is constant in time)");
+          check_run<dim>(parameters, scene.get(), launched_processes().first);
         }
 
         /** green-function: the model and its operator (it may refuse). */
@@ -143,11 +114,10 @@ namespace rsfcycle
       public:
         SpringSliderSimulation(const Parameters &parameters,
                                ParameterHandler &prm)
-          : slider((output::check_writers(parameters,
-                                          output::Offer{}.fields,
-                                          "the spring-slider"),
-                    parameters),
-                   prm)
+          : slider(
+              (check_run<2>(parameters, nullptr, launched_processes().first),
+               parameters),
+              prm)
         {}
 
         bool

@@ -23,9 +23,9 @@ namespace rsfcycle
 
     /**
      * The composition root of a run: every subsection's parameters, the
-     * rules that involve more than one entry (Parameters::validate when the
-     * file is parsed; here those that also need the scene, the model or the
-     * number of MPI ranks), the choice of the model and the run itself.
+     * rules that involve more than one entry (in one pass, check_run() of
+     * app/checks.h, before anything is written), the choice of the model
+     * and the run itself.
      * main.cc parses the command line and calls run().
      */
 
@@ -85,8 +85,8 @@ namespace rsfcycle
     /**
      * The simulation of `Scene` in `Dimension`: the continuum scenes through
      * ProblemBase, the spring-slider model (models/spring_slider.h, no
-     * mesh). Bad parameters throw std::invalid_argument here, before the run
-     * folder is touched.
+     * mesh), after check_run(): bad parameters throw std::invalid_argument
+     * here, before the run folder is touched.
      */
     std::unique_ptr<Simulation>
     make_simulation(const Parameters &parameters, ParameterHandler &prm);
@@ -102,7 +102,7 @@ namespace rsfcycle
 
     /**
      * Build the scene's simulation (bad input fails here, before anything is
-     * written), check what depends on the number of MPI ranks, start MPI if
+     * written: check_run()), start MPI if
      * the simulation needs it (one thread either way), let the simulation
      * prepare what may still refuse the input, prepare the run folder and
      * the log (log.txt: the screen's lines), run. `mpi` holds MPI once it is

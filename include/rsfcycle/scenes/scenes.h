@@ -12,9 +12,9 @@ namespace rsfcycle
   namespace scenes
   {
     /**
-     * The continuum scenes by name (a plain name-to-factory list). A new
-     * scene is a class in scenes/ and one line in each function of
-     * source/scenes/scenes.cc; nothing outside scenes/ changes.
+     * The continuum scenes by name (a list of names, subsections and
+     * factories). A new scene is a class in scenes/ and one line in the
+     * list of source/scenes/scenes.cc; nothing outside scenes/ changes.
      */
 
     /** Names of the scenes (the spring-slider too), as a Selection. */

@@ -64,6 +64,13 @@ namespace rsfcycle
       throw std::invalid_argument(
         bulk + "Time stepping/Integrator = runge-kutta or implicit (arkode "
                "samples the run only every Maximum step)");
+    if (ts.integrator == Integrator::explicit_steps &&
+        (green || solver.dynamics != SolverParameters::Dynamics::dynamic))
+      throw std::invalid_argument(
+        "Time stepping/Integrator = explicit: needs Solver/Dynamics = "
+        "dynamic and Solver/Bulk = volume (the explicit step is the wave "
+        "equation's; this run has " +
+        name_of(solver.dynamics) + ", " + name_of(solver.bulk) + ")");
     if (!green && ts.integrator == Integrator::runge_kutta &&
         run.scene != "spring-slider")
       throw std::invalid_argument(

@@ -17,7 +17,8 @@ namespace rsfcycle
   const std::vector<std::string>
     Choice<TimeSteppingParameters::Integrator>::names = {"implicit",
                                                          "arkode",
-                                                         "runge-kutta"};
+                                                         "runge-kutta",
+                                                         "explicit"};
   template <>
   const std::vector<std::string>
     Choice<TimeSteppingParameters::ErrorNorm>::names = {"L2", "max"};

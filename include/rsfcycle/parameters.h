@@ -116,7 +116,9 @@ namespace rsfcycle
       /** SUNDIALS ARKODE on the model's ODE */
       arkode,
       /** ARKODE's explicit Dormand-Prince 5(4) on the model's ODE */
-      runge_kutta
+      runge_kutta,
+      /** the model's explicit step, Courant number x its stable step */
+      explicit_steps
     };
 
     Integrator integrator         = Integrator::implicit;
@@ -131,6 +133,8 @@ namespace rsfcycle
     double    initial_step       = 1e-2;
     double    minimum_step       = 1e-9;
     double    maximum_step       = 100;
+    /** The explicit step as a fraction of the stable step [-]. */
+    double courant_number = 0.9;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/grid/tria.h>
 #include <rsfcycle/app/checks.h>
 #include <rsfcycle/models/continuum.h>
 #include <rsfcycle/models/green_fault.h>
@@ -41,6 +42,37 @@ namespace rsfcycle
             "Mesh file/Friction/Shear stress perturbation: needs "
             "Solver/Bulk = green-function (the volume method's shear "
             "prestress is constant in time)");
+      }
+
+
+      /**
+       * The explicit step (Time stepping/Integrator = explicit) needs
+       * inviscid materials: Kelvin-Voigt viscosity makes C a full matrix
+       * and the stable step tiny.
+       */
+      template <int dim>
+      void
+      check_explicit_steps(const Parameters          &parameters,
+                           const physics::Scene<dim> &scene)
+      {
+        if (parameters.time_stepping.integrator !=
+            TimeSteppingParameters::Integrator::explicit_steps)
+          return;
+        dealii::Triangulation<dim> coarse;
+        scene.create_coarse_mesh(coarse);
+        for (const auto &cell : coarse.active_cell_iterators())
+          {
+            const auto id =
+              scene.material_id(cell->center(), cell->material_id());
+            const physics::Material m = scene.material(id);
+            if (m.shear_viscosity != 0 || m.bulk_viscosity != 0)
+              throw std::invalid_argument(
+                "Time stepping/Integrator = explicit: needs inviscid "
+                "materials (material " +
+                std::to_string(id) +
+                " is Kelvin-Voigt viscous: its explicit step would be "
+                "tiny; Integrator = implicit takes it)");
+          }
       }
 
 
@@ -92,7 +124,10 @@ namespace rsfcycle
       if (scene && green)
         models::GreenFault<dim>::check(parameters, *scene);
       else if (scene)
-        check_volume_method(parameters, *scene);
+        {
+          check_volume_method(parameters, *scene);
+          check_explicit_steps(parameters, *scene);
+        }
       check_ranks(parameters, !scene, n_processes);
     }
 

@@ -246,6 +246,48 @@ namespace rsfcycle
       *tnnmg,
       [this](const Point<dim> &p) { return scene.along_base_coordinate(p); });
     implicit_step->set_timer(&timer);
+    if (parameters.solver.dynamics == SolverParameters::Dynamics::dynamic)
+      {
+        TimerOutput::Scope scope(timer, "Explicit step setup");
+        explicit_stepper = std::make_unique<models::ExplicitStep<dim>>(
+          discretisation,
+          contact,
+          *parameters.solver.law,
+          [this](const Point<dim> &p) {
+            return scene.along_base_coordinate(p);
+          });
+      }
+  }
+
+
+  template <int dim>
+  double
+  ProblemBase<dim>::stable_step() const
+  {
+    return explicit_stepper ? explicit_stepper->stable_step() : 0.;
+  }
+
+
+  template <int dim>
+  std::optional<BodyState>
+  ProblemBase<dim>::explicit_step(const BodyState &old,
+                                  const double     t,
+                                  const double     tau)
+  {
+    TimerOutput::Scope scope(timer, "Explicit step");
+    last_explicit = true;
+    return (*explicit_stepper)(old, t, tau);
+  }
+
+
+  template <int dim>
+  std::string
+  ProblemBase<dim>::explicit_refusal() const
+  {
+    if (!explicit_stepper)
+      return "needs Solver/Dynamics = dynamic (the explicit step is the "
+             "wave equation's)";
+    return explicit_stepper->refusal();
   }
 
 
@@ -291,6 +333,7 @@ namespace rsfcycle
                          const double     tau,
                          const BodyState *guess)
   {
+    last_explicit = false;
     return (*implicit_step)(old, t, tau, guess);
   }
 
@@ -390,7 +433,8 @@ namespace rsfcycle
   std::string
   ProblemBase<dim>::last_failure() const
   {
-    return implicit_step->last_failure();
+    return last_explicit ? explicit_stepper->last_failure() :
+                           implicit_step->last_failure();
   }
 
 
@@ -460,6 +504,18 @@ namespace rsfcycle
         << (fallback_correction ? " (direct fallback), " : ", ")
         << solver.law->name() << " law, " << name_of(solver.dynamics) << ", "
         << scheme->describe() << std::endl;
+    if (explicit_stepper &&
+        parameters.time_stepping.integrator ==
+          TimeSteppingParameters::Integrator::explicit_steps)
+      log << "Explicit step: "
+          << parameters.time_stepping.courant_number *
+               explicit_stepper->stable_step()
+          << " s, Courant number " << parameters.time_stepping.courant_number
+          << " x the stable step 2/omega_max = "
+          << explicit_stepper->stable_step()
+          << " s (the largest cell eigenvalue of the lumped mass and the "
+             "stiffness; smallest cell "
+          << explicit_stepper->smallest_cell() << " m)" << std::endl;
     if (const auto *mg =
           dynamic_cast<const solvers::MultigridCorrection<dim> *>(
             linear_correction.get()))

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <rsfcycle/la.h>
 #include <rsfcycle/models/continuum.h>
+#include <rsfcycle/models/explicit_step.h>
 #include <rsfcycle/models/implicit_step.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/physics/body_state.h>
@@ -16,6 +17,7 @@
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/scene.h>
 #include <rsfcycle/solvers/tnnmg.h>
+#include <rsfcycle/time/explicit_model.h>
 #include <rsfcycle/time/implicit_model.h>
 #include <rsfcycle/time/model.h>
 #include <rsfcycle/time/time_scheme.h>
@@ -49,7 +51,8 @@ namespace rsfcycle
   template <int dim>
   class ProblemBase : public models::Continuum<dim>,
                       public time::Model<BodyState>,
-                      public time::ImplicitModel<BodyState>
+                      public time::ImplicitModel<BodyState>,
+                      public time::ExplicitModel<BodyState>
   {
   public:
     using NodeInfo = typename physics::ContactQuadrature<dim>::NodeInfo;
@@ -180,6 +183,16 @@ namespace rsfcycle
     }
     /** @} */
 
+    /** @name The time::ExplicitModel interface (Dynamics = dynamic) */
+    /** @{ */
+    double
+    stable_step() const override;
+    std::optional<BodyState>
+    explicit_step(const BodyState &old, double t, double tau) override;
+    std::string
+    explicit_refusal() const override;
+    /** @} */
+
   private:
     void
     setup_system();
@@ -204,6 +217,10 @@ namespace rsfcycle
     /** The time scheme of the implicit step (`Solver/Time scheme`). */
     const std::unique_ptr<const time::TimeScheme> scheme;
     std::unique_ptr<models::ImplicitStep<dim>>    implicit_step;
+    /** The explicit step (Dynamics = dynamic only, else null). */
+    std::unique_ptr<models::ExplicitStep<dim>> explicit_stepper;
+    /** Whether the last step taken was explicit (for last_failure()). */
+    bool last_explicit = false;
 
     BodyState initial;
     /** Contact nodes with a tensile reaction in the gravity equilibrium. */

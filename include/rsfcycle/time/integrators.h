@@ -5,6 +5,8 @@
 #include <memory>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/time/arkode.h>
+#include <rsfcycle/time/explicit_model.h>
+#include <rsfcycle/time/explicit_steps.h>
 #include <rsfcycle/time/implicit_model.h>
 #include <rsfcycle/time/integrator.h>
 #include <rsfcycle/time/model.h>
@@ -54,6 +56,10 @@ namespace rsfcycle
           case Kind::runge_kutta:
             return std::make_unique<RungeKuttaIntegrator<State>>(
               parameters.time_stepping, model_as<OdeModel<State>>(model, name));
+          case Kind::explicit_steps:
+            return std::make_unique<ExplicitSteps<State>>(
+              model_as<ExplicitModel<State>>(model, name),
+              parameters.time_stepping.courant_number);
         }
       throw std::logic_error("make_integrator: a Kind without its case");
     }

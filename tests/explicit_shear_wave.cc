@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// Checks the explicit step (models::ExplicitStep, Time stepping/Integrator
+// = explicit) against closed forms, on the antiplane block of
+// block_scene.h (1 m x 0.25 m, held at x = 1, traction free at x = 0 and
+// on the top, the base a contact without normal force: free), refined
+// three times globally: square cells of h = 1/32 m, rho = 1000 kg/m^3,
+// G = 0.6 MPa, c_s = sqrt(G / rho) = 24.4949 m/s.
+//  - The stable step. With the lumped mass the largest eigenvalue of a
+//    square Q1 cell's K_e x = lambda M_L,e x is 4 c^2 / h^2, so the bound
+//    is 2 / omega_max = h / c_s = 1.27578e-3 s; printed as the ratio of
+//    the computed stable step to it (1).
+//  - A plane shear wave, the standing mode u = cos(k x), k = pi/2 m^-1,
+//    uniform in y (free at x = 0, zero at x = 1). It is an exact
+//    eigenvector of the lumped system with lambda_h = 4 c^2 sin^2(k h/2)
+//    / h^2, so central differences give u(t_n) = cos(n theta) cos(k x)
+//    with cos theta = 1 - tau^2 lambda_h / 2, to rounding: checked after
+//    36 steps of 0.9 h / c_s (a quarter period, where u changes fastest),
+//    printed "yes" when every dof agrees to 1e-10. The continuum's
+//    cos(c k t) differs from it by the discretisation's dispersion, the
+//    space's -(k h)^2/24 and the time's +(c k tau)^2/24 in the frequency
+//    (-1.0e-4 and +8.1e-5): their difference at x = 0 is printed (about
+//    1.6 x 2e-5 = 3e-5).
+//  - Stability as predicted: the mode of the largest eigenvalue here is
+//    uniform in x but for the held end (lambda_max = (4 - 4/3 sin^2(pi /
+//    128)) c^2/h^2, 0.9998 of the bound). From a rough start (values
+//    between -0.5 and 0.5 at every free dof), 2000 steps of 0.99 of the
+//    stable step stay bounded (max |u| below 20 times its start: yes);
+//    100 steps of 1.01 of it grow beyond 1e6 times the start (the growth
+//    factor of that mode is 1.33 per step): yes.
+#include "block_scene.h"
+#include "tests.h"
+
+#include <deal.II/base/function.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <rsfcycle/friction/laws.h>
+#include <rsfcycle/models/explicit_step.h>
+
+namespace
+{
+  class Mode : public Function<2>
+  {
+  public:
+    double
+    value(const Point<2> &p, const unsigned int) const override
+    {
+      return std::cos(numbers::PI / 2 * p[0]);
+    }
+  };
+
+  double
+  max_abs(const la::Vector &u)
+  {
+    return u.linfty_norm();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  initlog(6);
+  MeshParameters mesh;
+  mesh.global_refinements = 3;
+  mesh.local_refinements  = 0;
+  Block                      scene;
+  physics::Discretisation<2> d(mesh, scene, {true, false});
+  d.make_grid();
+  d.setup_system();
+  d.setup_boundary_conditions();
+  d.assemble_matrices();
+  physics::ContactQuadrature<2> contact;
+  contact.setup(d.dof_handler,
+                d.scalar_dof_handler,
+                d.hanging_constraints,
+                *d.partitioner,
+                d.fixed,
+                [&](const Point<2> &p) {
+                  return scene.friction_parameters(p);
+                });
+  const auto              law = friction::make_law("ageing");
+  models::ExplicitStep<2> step(d, contact, *law, [](const Point<2> &p) {
+    return p[0];
+  });
+  const double            h = 1. / 32, c = std::sqrt(0.6e6 / 1000);
+  deallog << "stable step / (h / c_s): " << step.stable_step() / (h / c)
+          << "; refused: " << (step.refusal().empty() ? "no" : step.refusal())
+          << std::endl;
+
+  // the standing wave
+  BodyState state;
+  d.reinit(state.u);
+  d.reinit(state.v);
+  d.reinit(state.a);
+  VectorTools::interpolate(d.dof_handler, Mode(), state.u);
+  const double k        = numbers::PI / 2,
+               lambda_h = 4 * c * c * std::pow(std::sin(k * h / 2), 2) / h / h;
+  state.a               = state.u;
+  state.a *= -lambda_h;
+  state.alpha.assign(contact.n_nodes(), 0.);
+  const BodyState    start = state;
+  const double       tau   = 0.9 * h / c;
+  const unsigned int n     = 36;
+  double             t     = 0;
+  for (unsigned int i = 0; i < n; ++i, t += tau)
+    state = *step(state, t, tau);
+  const double theta  = std::acos(1 - tau * tau * lambda_h / 2);
+  la::Vector   expect = start.u;
+  expect *= std::cos(n * theta);
+  expect -= state.u;
+  unsigned int origin = 0;
+  for (const auto &cell : d.dof_handler.active_cell_iterators())
+    for (const unsigned int v : cell->vertex_indices())
+      if (cell->vertex(v).norm() < 1e-12)
+        origin = cell->vertex_dof_index(v, 0);
+  deallog << "standing wave after " << n << " steps of " << tau
+          << " s: the discrete closed form at every dof: "
+          << (max_abs(expect) < 1e-10 ? "yes" : "no")
+          << "; u(0, t) - cos(c k t) = " << std::setprecision(2)
+          << state.u(origin) - std::cos(c * k * t) << std::setprecision(6)
+          << std::endl;
+
+  // stability at and above the limit
+  for (const auto &[fraction, steps] :
+       {std::pair{0.99, 2000u}, std::pair{1.01, 100u}})
+    {
+      BodyState rough = start;
+      rough.v         = 0;
+      rough.a         = 0;
+      for (unsigned int i = 0; i < rough.u.locally_owned_size(); ++i)
+        rough.u.local_element(i) =
+          d.fixed[i] ? 0. : ((i * 7919) % 101) / 101. - 0.5;
+      const double first = max_abs(rough.u);
+      double       most  = first;
+      const double dt    = fraction * step.stable_step();
+      for (unsigned int i = 0; i < steps; ++i)
+        {
+          rough = *step(rough, i * dt, dt);
+          most  = std::max(most, max_abs(rough.u));
+        }
+      deallog << fraction << " x the stable step, " << steps
+              << " steps: max |u| / start "
+              << (fraction < 1 ? "below 20: " : "above 1e6: ")
+              << ((fraction < 1 ? most < 20 * first : most > 1e6 * first) ?
+                    "yes" :
+                    "no")
+              << std::endl;
+    }
+}

@@ -64,13 +64,22 @@ namespace rsfcycle
       throw std::invalid_argument(
         bulk + "Time stepping/Integrator = runge-kutta or implicit (arkode "
                "samples the run only every Maximum step)");
-    if (ts.integrator == Integrator::explicit_steps &&
+    if ((ts.integrator == Integrator::explicit_steps ||
+         ts.integrator == Integrator::implicit_explicit) &&
         (green || solver.dynamics != SolverParameters::Dynamics::dynamic))
       throw std::invalid_argument(
-        "Time stepping/Integrator = explicit: needs Solver/Dynamics = "
+        "Time stepping/Integrator = " + name_of(ts.integrator) +
+        ": needs Solver/Dynamics = "
         "dynamic and Solver/Bulk = volume (the explicit step is the wave "
         "equation's; this run has " +
         name_of(solver.dynamics) + ", " + name_of(solver.bulk) + ")");
+    if ((ts.integrator == Integrator::explicit_steps ||
+         ts.integrator == Integrator::implicit_explicit) &&
+        !solver.lumped_mass)
+      throw std::invalid_argument(
+        "Time stepping/Integrator = " + name_of(ts.integrator) +
+        ": needs Solver/Mass matrix = lumped (the explicit step's mass; "
+        "the implicit steps of the run take it too)");
     if (!green && ts.integrator == Integrator::runge_kutta &&
         run.scene != "spring-slider")
       throw std::invalid_argument(

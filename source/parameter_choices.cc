@@ -18,7 +18,8 @@ namespace rsfcycle
     Choice<TimeSteppingParameters::Integrator>::names = {"implicit",
                                                          "arkode",
                                                          "runge-kutta",
-                                                         "explicit"};
+                                                         "explicit",
+                                                         "implicit-explicit"};
   template <>
   const std::vector<std::string>
     Choice<TimeSteppingParameters::ErrorNorm>::names = {"L2", "max"};

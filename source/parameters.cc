@@ -169,6 +169,15 @@ namespace rsfcycle
                       "term and with the radiation damping eta V added to the "
                       "friction on every contact node (eta of the scene, by "
                       "default sqrt(G rho) of the material at the node)");
+    prm.declare_entry("Mass matrix",
+                      "consistent",
+                      Selection("consistent|lumped"),
+                      "With Dynamics = dynamic: the mass matrix as assembled "
+                      "(consistent) or every cell's lumped to the diagonal of "
+                      "its row sums (lumped: the explicit step's mass, which "
+                      "Time stepping/Integrator = explicit and "
+                      "implicit-explicit need, so that both steps solve the "
+                      "same equations)");
     prm.declare_entry(
       "Bulk",
       "volume",
@@ -328,6 +337,7 @@ namespace rsfcycle
     time_scheme         = prm.get("Time scheme");
     coupling            = Choice<Coupling>::parse(prm.get("Coupling"));
     dynamics            = Choice<Dynamics>::parse(prm.get("Dynamics"));
+    lumped_mass         = prm.get("Mass matrix") == "lumped";
     bulk                = Choice<Bulk>::parse(prm.get("Bulk"));
     green_operator_file = prm.get("Green operator file");
     green_storage =

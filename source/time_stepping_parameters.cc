@@ -30,15 +30,23 @@ namespace rsfcycle
       "explicit: the volume method's explicit step (Solver/Dynamics = "
       "dynamic, inviscid materials: central differences with the lumped "
       "mass, the friction solved node by node), every step Courant number "
-      "x the mesh's stable step (shown in the log)");
+      "x the mesh's stable step (shown in the log); implicit-explicit: "
+      "implicit while the step the Controller allows is at least 16 "
+      "explicit steps, explicit while it is shorter (inside events), back "
+      "when the implicit step's error estimate allows 32 explicit steps "
+      "(doc/model.md 8.3a; a model without an explicit step keeps the "
+      "implicit one and says so in the log)");
     prm.declare_entry("Courant number",
-                      "0.9",
+                      "0.5",
                       Double(1e-3, 1),
-                      "With Integrator = explicit: the explicit step as a "
+                      "With Integrator = explicit or implicit-explicit: the "
+                      "explicit step as a "
                       "fraction of the mesh's stable step 2/omega_max (the "
                       "largest eigenvalue omega_max^2 of the lumped mass's "
                       "inverse times the stiffness, bounded from above cell "
-                      "by cell) [-]");
+                      "by cell; a rupture front wants a few steps per cell, "
+                      "and the peak slip rate converges as the step falls "
+                      "below half the stable one) [-]");
     prm.declare_entry("Adaptive",
                       "true",
                       Bool(),

@@ -118,7 +118,9 @@ namespace rsfcycle
       /** ARKODE's explicit Dormand-Prince 5(4) on the model's ODE */
       runge_kutta,
       /** the model's explicit step, Courant number x its stable step */
-      explicit_steps
+      explicit_steps,
+      /** implicit steps, explicit ones where they are shorter */
+      implicit_explicit
     };
 
     Integrator integrator         = Integrator::implicit;
@@ -134,7 +136,7 @@ namespace rsfcycle
     double    minimum_step       = 1e-9;
     double    maximum_step       = 100;
     /** The explicit step as a fraction of the stable step [-]. */
-    double courant_number = 0.9;
+    double courant_number = 0.5;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -186,7 +188,9 @@ namespace rsfcycle
     std::shared_ptr<const friction::Law> law = friction::make_law("ageing");
     Coupling                             coupling = Coupling::fixed_point;
     Dynamics                             dynamics = Dynamics::dynamic;
-    Bulk                                 bulk     = Bulk::volume;
+    /** Mass matrix = lumped (true) or consistent (false). */
+    bool lumped_mass = false;
+    Bulk bulk        = Bulk::volume;
     /**
      * `Green operator file`: the operator of an earlier green-function run
      * to reuse (absolute after parsing), or empty to compute it.

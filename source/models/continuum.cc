@@ -9,14 +9,17 @@ namespace rsfcycle
     Continuum<dim>::Continuum(const Parameters          &parameters,
                               const physics::Scene<dim> &scene,
                               std::ostream              &log,
-                              const bool                 radiation_damping)
+                              const bool                 radiation_damping,
+                              const bool                 lumped_mass)
       : parameters(parameters)
       , scene(scene)
       , log(log)
       , timer(log, dealii::TimerOutput::never, dealii::TimerOutput::wall_times)
       , discretisation(parameters.mesh,
                        scene,
-                       {parameters.run.antiplane, radiation_damping})
+                       {parameters.run.antiplane,
+                        radiation_damping,
+                        lumped_mass})
     {}
 
 

@@ -29,7 +29,8 @@ namespace rsfcycle
                              scene,
                              log,
                              parameters.solver.dynamics ==
-                               SolverParameters::Dynamics::quasi_dynamic)
+                               SolverParameters::Dynamics::quasi_dynamic,
+                             parameters.solver.lumped_mass)
     , scheme(time::make_scheme(parameters.solver,
                                parameters.solver.dynamics ==
                                  SolverParameters::Dynamics::dynamic))
@@ -504,9 +505,10 @@ namespace rsfcycle
         << (fallback_correction ? " (direct fallback), " : ", ")
         << solver.law->name() << " law, " << name_of(solver.dynamics) << ", "
         << scheme->describe() << std::endl;
-    if (explicit_stepper &&
-        parameters.time_stepping.integrator ==
-          TimeSteppingParameters::Integrator::explicit_steps)
+    using Integrator = TimeSteppingParameters::Integrator;
+    if (explicit_stepper && explicit_stepper->refusal().empty() &&
+        (parameters.time_stepping.integrator == Integrator::explicit_steps ||
+         parameters.time_stepping.integrator == Integrator::implicit_explicit))
       log << "Explicit step: "
           << parameters.time_stepping.courant_number *
                explicit_stepper->stable_step()

@@ -288,6 +288,17 @@ namespace rsfcycle
       if (options.radiation_damping)
         add_contact_terms(cell, &material, &cell_viscosity, nullptr);
       add_absorbing_terms(cell, material, cell_viscosity);
+      if (options.lumped_mass)
+        for (unsigned int i = 0; i < cell_mass.m(); ++i)
+          {
+            double row = 0;
+            for (unsigned int j = 0; j < cell_mass.n(); ++j)
+              {
+                row += cell_mass(i, j);
+                cell_mass(i, j) = 0;
+              }
+            cell_mass(i, i) = row;
+          }
     }
 
 

@@ -125,7 +125,8 @@ check_bp1 green-dashpots "dashpots" 'subsection Mesh file\nset Boundary roles = 
 check green-gravity "Normal stress" 'subsection Solver\nset Dynamics = quasi-dynamic\nset Bulk = green-function\nend\nsubsection Time stepping\nset Integrator = runge-kutta\nend'
 check runge-kutta-volume "Bulk = green-function" 'subsection Time stepping\nset Integrator = runge-kutta\nend'
 check explicit-quasi-static "Integrator = explicit: needs Solver/Dynamics = dynamic" 'subsection Solver\nset Dynamics = quasi-static\nend\nsubsection Time stepping\nset Integrator = explicit\nend'
-check explicit-viscous "Integrator = explicit: needs inviscid" 'subsection Solver\nset Dynamics = dynamic\nset Time scheme = generalized-alpha\nend\nsubsection Time stepping\nset Integrator = explicit\nend'
+check explicit-consistent-mass "Integrator = implicit-explicit: needs Solver/Mass matrix = lumped" 'subsection Time stepping\nset Integrator = implicit-explicit\nend'
+check explicit-viscous "Integrator = explicit: needs inviscid" 'subsection Solver\nset Dynamics = dynamic\nset Mass matrix = lumped\nend\nsubsection Time stepping\nset Integrator = explicit\nend'
 # A fault between two deformable sides (tests/meshes/split-fault-2d.msh):
 # the volume method with multigrid (only the direct correction ties the two
 # sides so far), gravity, a free

@@ -12,7 +12,8 @@
 # with step doubling and with local extrapolation, for SEAS BP1-QD with
 # Solver/Bulk = green-function (the Runge-Kutta on the fault; its VTU and
 # HDF5 snapshots: the records and XDMF indices equal), and for SEAS
-# BP3-QD's split fault in the volume method (its normal stress output).
+# BP3-QD's split fault in the volume method (its normal stress output), and
+# for Integrator = implicit-explicit (killed among its explicit steps).
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -122,6 +123,14 @@ subsection Output
 end
 PRM
 }
+# Integrator = implicit-explicit (tests/implicit_explicit_event.prm.in):
+# its first 290 steps are explicit, so the kill after 120 rows falls among
+# them, and the resumed run changes to implicit steps and back
+make_implicit_explicit_prm() {
+  sed -e "s|@SOURCE_DIR@|$src/tests|" -e "s|^set Output directory .*|set Output directory = $1|" \
+    "$src/tests/implicit_explicit_event.prm.in" > "$1.prm"
+  printf 'subsection Output\n  set Checkpoint steps = 20\n  set Writers = time series, base profile, events\nend\n' >> "$1.prm"
+}
 fail() { echo "FAILED: $*"; exit 1; }
 # start run $1 in the background (pid in $pid) and wait until it has
 # written a checkpoint and 120 rows
@@ -185,3 +194,4 @@ check_resume slider make_slider_prm
 check_resume slider-local-extrapolation make_slider_le_prm
 check_resume green-function make_green_prm
 check_resume split-volume make_split_prm
+check_resume implicit-explicit make_implicit_explicit_prm

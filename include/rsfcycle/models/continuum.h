@@ -44,13 +44,14 @@ namespace rsfcycle
     {
     protected:
       /**
-       * `radiation_damping`: the quasi-dynamic dashpot on the contact in C
-       * (physics::Discretisation::Options).
+       * `radiation_damping`: the quasi-dynamic dashpot on the contact in C;
+       * `lumped_mass`: M lumped (physics::Discretisation::Options).
        */
       Continuum(const Parameters          &parameters,
                 const physics::Scene<dim> &scene,
                 std::ostream              &log,
-                bool                       radiation_damping);
+                bool                       radiation_damping,
+                bool                       lumped_mass = false);
 
       /**
        * The lines "Scene: NAME (dD[, antiplane])" and "Mesh: N cells, L

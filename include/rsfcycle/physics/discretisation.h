@@ -89,6 +89,12 @@ namespace rsfcycle
          * (Scene::radiation_damping()) on the contact to C.
          */
         bool radiation_damping = false;
+        /**
+         * The mass lumped: every cell's mass matrix replaced by the
+         * diagonal of its row sums (the explicit step's mass, taken by the
+         * implicit step too where a run changes between them).
+         */
+        bool lumped_mass = false;
       };
 
       Discretisation(const MeshParameters      &mesh,

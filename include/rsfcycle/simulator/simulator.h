@@ -185,6 +185,11 @@ namespace rsfcycle
      */
     std::string reported_failure;
     /**
+     * How often the current event returned above the threshold within the
+     * merge time (logged once, counted in its end line).
+     */
+    unsigned int returns = 0;
+    /**
      * The ETA extrapolates the mean rate (wall seconds per simulated
      * second) since the start (or resume) of the run until a whole
      * seismic cycle has been run, from the first event that starts in

@@ -233,6 +233,8 @@ namespace rsfcycle
               report_underflow(e);
               throw;
             }
+          if (const std::string note = integrator->take_note(); !note.empty())
+            log << "    " << note << std::endl;
           if (const std::string warning = integrator->take_warning();
               !warning.empty())
             log << "*** Warning: " << warning << std::endl;
@@ -409,16 +411,27 @@ namespace rsfcycle
           log << " (closed at t = " << t << " s, after the event merge time)";
         log << ": peak slip rate " << e.peak_slip_rate / v0
             << " v0, rupture width " << e.rupture_width() << " m, slip "
-            << e.slip * 1e6 << " um" << std::endl;
+            << e.slip * 1e6 << " um";
+        if (returns > 1)
+          log << "; it returned above the threshold " << returns << " times";
+        log << std::endl;
       }
     if (was_ending && !ended && events.in_event())
-      log << "    event " << events.n_started() << " continues at t = " << t
-          << " s, within the event merge time of its end" << std::endl;
+      {
+        // an arresting rupture's slip rate may cross the threshold often:
+        // the first return is logged, the others counted
+        if (returns++ == 0)
+          log << "    event " << events.n_started() << " continues at t = " << t
+              << " s, within the event merge time of its end" << std::endl;
+      }
     else if (!was_in_event && events.in_event())
-      log << "    event " << events.n_started()
-          << " starts at t = " << events.current().start
-          << " s near s = " << events.current().nucleation_position
-          << " m along the base" << std::endl;
+      {
+        returns = 0;
+        log << "    event " << events.n_started()
+            << " starts at t = " << events.current().start
+            << " s near s = " << events.current().nucleation_position
+            << " m along the base" << std::endl;
+      }
   }
 
 

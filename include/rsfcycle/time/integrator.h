@@ -97,6 +97,17 @@ namespace rsfcycle
       restore(const IntegratorMemory<State> &memory) = 0;
 
       /**
+       * A note on how the run is advanced (one line, such as a change of
+       * step) that the last advance() raised and the simulator writes to
+       * the log; empty if none. Each is returned once.
+       */
+      virtual std::string
+      take_note()
+      {
+        return {};
+      }
+
+      /**
        * A warning about the run (one line, without "Warning:") that the
        * last advance() raised and the simulator writes to the log; empty
        * if none. Each is returned once.

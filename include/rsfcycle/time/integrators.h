@@ -13,6 +13,7 @@
 #include <rsfcycle/time/ode_model.h>
 #include <rsfcycle/time/runge_kutta.h>
 #include <rsfcycle/time/step_size_control.h>
+#include <rsfcycle/time/switching.h>
 #include <stdexcept>
 #include <string>
 
@@ -60,6 +61,11 @@ namespace rsfcycle
             return std::make_unique<ExplicitSteps<State>>(
               model_as<ExplicitModel<State>>(model, name),
               parameters.time_stepping.courant_number);
+          case Kind::implicit_explicit:
+            return std::make_unique<Switching<State>>(
+              parameters.time_stepping,
+              model_as<ImplicitModel<State>>(model, name),
+              model_as<ExplicitModel<State>>(model, name));
         }
       throw std::logic_error("make_integrator: a Kind without its case");
     }

@@ -154,8 +154,9 @@ namespace rsfcycle
                       "ageing",
                       Selection(friction::law_names()),
                       "The friction law: the regularised coefficient (2) "
-                      "with the state evolving by the ageing law (4) or the "
-                      "slip law");
+                      "with the state evolving by the ageing law (4), the "
+                      "slip law, or the quadratic law of Perrin, Rice and "
+                      "Zheng (1995), theta' = 1 - (theta V / 2 L)^2");
     prm.declare_entry("Coupling",
                       "fixed-point",
                       Selection(Choice<Coupling>::pattern()),

@@ -6,11 +6,16 @@
 // at round-off level), for V from 1e-3 to 1e-300 m/s and V = 0 (where
 // theta = theta0 + t, and no division by V may happen); and the slip law
 // against its analytic solution log(theta V/L) = log(theta0 V/L) e^{-Vt/L},
-// with V = 0 leaving the state unchanged.
+// with V = 0 leaving the state unchanged; and the quadratic law (Perrin,
+// Rice and Zheng) against its analytic solution for constant V, with k =
+// V/(2L): theta(t) = tanh(k t + atanh(k theta0))/k (coth and acoth when k
+// theta0 > 1: V = 1e-3 and 50e-6 here), theta0 + t at V = 0, and its
+// steady state theta = 2L/V kept.
 #include "tests.h"
 
 #include <cmath>
 #include <rsfcycle/friction/ageing_law.h>
+#include <rsfcycle/friction/quadratic_law.h>
 #include <rsfcycle/friction/slip_law.h>
 
 using namespace rsfcycle::friction;
@@ -64,6 +69,34 @@ main()
                       << (std::abs(alpha - alpha_exact) < 1e-12 ? "yes" : "no")
                       << std::endl;
     }
+
+  const QuadraticLaw quadratic;
+  for (const double V : {1e-3, 50e-6, 1e-9, 1e-300, 0.})
+    {
+      double alpha = alpha0;
+      for (int n = 0; n < 100; ++n)
+        alpha = quadratic.update_state(p, alpha, V, tau);
+      const double k = V / (2 * p.L), y0 = k * theta0;
+      double       theta_exact = theta0 + t_end;
+      if (k * t_end > 1e-8)
+        theta_exact =
+          (y0 < 1 ?
+             std::tanh(k * t_end + std::atanh(y0)) :
+             1 / std::tanh(k * t_end + 0.5 * std::log((y0 + 1) / (y0 - 1)))) /
+          k;
+      const double alpha_exact = std::log(theta_exact * p.v_star / p.L);
+      dealii::deallog << "quadratic V = " << V << ": alpha = " << alpha
+                      << ", |error| < 1e-12: "
+                      << (std::abs(alpha - alpha_exact) < 1e-12 ? "yes" : "no")
+                      << std::endl;
+    }
+  dealii::deallog << "quadratic steady state stays: "
+                  << quadratic.update_state(p,
+                                            std::log(2 * p.v_star / 1e-4),
+                                            1e-4,
+                                            10.) -
+                       std::log(2 * p.v_star / 1e-4)
+                  << std::endl;
 
   // Steady state of the ageing law: theta = L/V is a fixed point.
   const double V  = 1e-4;

@@ -2,6 +2,7 @@
 #include <functional>
 #include <rsfcycle/friction/ageing_law.h>
 #include <rsfcycle/friction/laws.h>
+#include <rsfcycle/friction/quadratic_law.h>
 #include <rsfcycle/friction/slip_law.h>
 #include <stdexcept>
 #include <utility>
@@ -21,7 +22,8 @@ namespace rsfcycle
       {
         static const std::vector<std::pair<std::string, Factory>> list = {
           {"ageing", [] { return std::make_shared<AgeingLaw>(); }},
-          {"slip", [] { return std::make_shared<SlipLaw>(); }}};
+          {"slip", [] { return std::make_shared<SlipLaw>(); }},
+          {"quadratic", [] { return std::make_shared<QuadraticLaw>(); }}};
         return list;
       }
     } // namespace

@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-#include <deal.II/grid/tria.h>
 #include <rsfcycle/app/checks.h>
 #include <rsfcycle/models/continuum.h>
 #include <rsfcycle/models/green_fault.h>
@@ -58,21 +57,13 @@ namespace rsfcycle
         if (parameters.time_stepping.integrator !=
             TimeSteppingParameters::Integrator::explicit_steps)
           return;
-        dealii::Triangulation<dim> coarse;
-        scene.create_coarse_mesh(coarse);
-        for (const auto &cell : coarse.active_cell_iterators())
-          {
-            const auto id =
-              scene.material_id(cell->center(), cell->material_id());
-            const physics::Material m = scene.material(id);
-            if (m.shear_viscosity != 0 || m.bulk_viscosity != 0)
-              throw std::invalid_argument(
-                "Time stepping/Integrator = explicit: needs inviscid "
-                "materials (material " +
-                std::to_string(id) +
-                " is Kelvin-Voigt viscous: its explicit step would be "
-                "tiny; Integrator = implicit takes it)");
-          }
+        if (const auto viscous = models::viscous_material(scene))
+          throw std::invalid_argument(
+            "Time stepping/Integrator = explicit: needs inviscid materials "
+            "(material " +
+            std::to_string(viscous->first) +
+            " is Kelvin-Voigt viscous: its explicit step would be tiny; "
+            "Integrator = implicit takes it)");
       }
 
 

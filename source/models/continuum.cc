@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <deal.II/grid/tria.h>
 #include <rsfcycle/models/continuum.h>
 
 namespace rsfcycle
@@ -57,6 +58,30 @@ namespace rsfcycle
     }
 
 
+    template <int dim>
+    std::optional<std::pair<dealii::types::material_id, physics::Material>>
+    viscous_material(const physics::Scene<dim> &scene)
+    {
+      dealii::Triangulation<dim> coarse;
+      scene.create_coarse_mesh(coarse);
+      for (const auto &cell : coarse.active_cell_iterators())
+        {
+          const auto id =
+            scene.material_id(cell->center(), cell->material_id());
+          const physics::Material m = scene.material(id);
+          if (m.shear_viscosity != 0 || m.bulk_viscosity != 0)
+            return std::make_pair(id, m);
+        }
+      return {};
+    }
+
+
+    template std::optional<
+      std::pair<dealii::types::material_id, physics::Material>>
+    viscous_material<2>(const physics::Scene<2> &);
+    template std::optional<
+      std::pair<dealii::types::material_id, physics::Material>>
+    viscous_material<3>(const physics::Scene<3> &);
     template class Continuum<2>;
     template class Continuum<3>;
   } // namespace models

@@ -37,22 +37,14 @@ namespace rsfcycle
           refused + "needs a prescribed normal stress (Friction/Normal "
                     "stress); the normal stress of the gravity equilibrium "
                     "changes with slip");
-      Triangulation<dim> coarse;
-      scene.create_coarse_mesh(coarse);
-      for (const auto &cell : coarse.active_cell_iterators())
-        {
-          const auto id =
-            scene.material_id(cell->center(), cell->material_id());
-          const physics::Material m = scene.material(id);
-          if (m.shear_viscosity != 0 || m.bulk_viscosity != 0)
-            throw std::invalid_argument(
-              refused + "needs an elastic bulk (Materials: material " +
-              std::to_string(id) + " has shear viscosity " +
-              format_number(m.shear_viscosity) + ", bulk viscosity " +
-              format_number(m.bulk_viscosity) +
-              "; Kelvin-Voigt viscosity is not a Green's function of the "
-              "slip)");
-        }
+      if (const auto viscous = viscous_material(scene))
+        throw std::invalid_argument(
+          refused + "needs an elastic bulk (Materials: material " +
+          std::to_string(viscous->first) + " has shear viscosity " +
+          format_number(viscous->second.shear_viscosity) + ", bulk viscosity " +
+          format_number(viscous->second.bulk_viscosity) +
+          "; Kelvin-Voigt viscosity is not a Green's function of the "
+          "slip)");
       if (scene.split_fault() && scene.gravity().norm() != 0)
         throw std::invalid_argument(
           refused + "with a fault-opposite side (Boundary roles) needs "

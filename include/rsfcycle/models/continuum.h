@@ -4,6 +4,7 @@
 
 #include <deal.II/base/timer.h>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <rsfcycle/output/snapshots.h>
 #include <rsfcycle/output/writers.h>
@@ -13,6 +14,7 @@
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/scene.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rsfcycle
@@ -30,6 +32,14 @@ namespace rsfcycle
               output::Field::stresses,
               output::Field::body};
     }
+
+    /**
+     * The first material of the scene's coarse mesh with Kelvin-Voigt
+     * viscosity, with its id; none if the body is elastic.
+     */
+    template <int dim>
+    std::optional<std::pair<dealii::types::material_id, physics::Material>>
+    viscous_material(const physics::Scene<dim> &scene);
 
     /**
      * What the two continuum models (the volume method ProblemBase and the

@@ -7,6 +7,7 @@
 #include <rsfcycle/format.h>
 #include <rsfcycle/parameters.h>
 #include <rsfcycle/time/explicit_model.h>
+#include <rsfcycle/time/explicit_steps.h>
 #include <rsfcycle/time/implicit_model.h>
 #include <rsfcycle/time/integrator.h>
 #include <rsfcycle/time/step_size_control.h>
@@ -51,7 +52,11 @@ namespace rsfcycle
                         (refusal.empty() ? explicit_model.stable_step() : 0.))
         , implicit(make_step_size_control(ts, implicit_model))
       {
-        if (!refusal.empty())
+        if (refusal.empty())
+          explicit_steps =
+            std::make_unique<ExplicitSteps<State>>(explicit_model,
+                                                   ts.courant_number);
+        else
           note = "implicit steps only: " + refusal;
       }
 
@@ -78,15 +83,8 @@ namespace rsfcycle
         work = 0;
         if (countdown == 0 && probe(current, t, end_time))
           return;
-        const double step = std::min(explicit_step, end_time - t);
-        auto         next = explicit_model.explicit_step(current, t, step);
-        if (!next)
-          throw StepSizeUnderflow(
-            "the explicit step of " + format_number(step) +
-            " s at t = " + format_number(t) + " s failed");
-        current = std::move(*next);
-        t += step;
-        last = step;
+        explicit_steps->advance(current, t, end_time);
+        last = explicit_steps->last_step_size();
         work += 1;
         if (countdown > 0)
           --countdown;
@@ -214,12 +212,14 @@ namespace rsfcycle
       const std::string                  refusal;
       const double                       explicit_step;
       std::unique_ptr<Integrator<State>> implicit;
-      bool                               explicit_mode = false;
-      unsigned int                       countdown     = 0;
-      unsigned int                       interval      = 0;
-      double                             last          = 0;
-      unsigned int                       work          = 0;
-      std::string                        note;
+      /** The explicit steps (none if the model has no explicit step). */
+      std::unique_ptr<ExplicitSteps<State>> explicit_steps;
+      bool                                  explicit_mode = false;
+      unsigned int                          countdown     = 0;
+      unsigned int                          interval      = 0;
+      double                                last          = 0;
+      unsigned int                          work          = 0;
+      std::string                           note;
     };
   } // namespace time
 } // namespace rsfcycle

@@ -26,6 +26,21 @@ namespace rsfcycle
 
     template <int dim>
     void
+    Continuum<dim>::setup_contact()
+    {
+      contact.setup(discretisation.dof_handler,
+                    discretisation.scalar_dof_handler,
+                    discretisation.hanging_constraints,
+                    *discretisation.partitioner,
+                    discretisation.fixed,
+                    [this](const dealii::Point<dim> &p) {
+                      return scene.friction_parameters(p);
+                    });
+    }
+
+
+    template <int dim>
+    void
     Continuum<dim>::describe_scene(std::ostream &out) const
     {
       const auto &tria = discretisation.triangulation;

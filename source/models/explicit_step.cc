@@ -73,7 +73,9 @@ namespace rsfcycle
       , law(law)
       , along_base(std::move(along_base))
       , potentials(contact.potentials(law))
+      , load(discretisation.body_force)
     {
+      load += discretisation.prestress_force;
       const la::LocalMatrix &M = discretisation.mass_local;
       const la::LocalMatrix &C = discretisation.viscosity_local;
       const unsigned int     n = M.m();
@@ -122,12 +124,9 @@ namespace rsfcycle
       v_star.add(tau / 2, old.a);
 
       // r = f - K u_{n+1} - C v*, the force without friction
-      la::Vector r(discretisation.body_force);
-      r += discretisation.prestress_force;
-      la::Vector Ku;
-      Ku.reinit(r);
-      discretisation.stiffness_local.vmult(Ku, next.u);
-      r -= Ku;
+      la::Vector r;
+      r.reinit(load, true);
+      discretisation.stiffness_local.residual(r, next.u, load);
       const unsigned int n = mass.size();
       for (unsigned int i = 0; i < n; ++i)
         r.local_element(i) -= damping[i] * v_star.local_element(i);

@@ -83,14 +83,7 @@ namespace rsfcycle
         discretisation.make_grid();
         discretisation.setup_system();
         discretisation.setup_boundary_conditions();
-        contact.setup(discretisation.dof_handler,
-                      discretisation.scalar_dof_handler,
-                      discretisation.hanging_constraints,
-                      *discretisation.partitioner,
-                      discretisation.fixed,
-                      [this](const Point<dim> &p) {
-                        return scene.friction_parameters(p);
-                      });
+        this->setup_contact();
         discretisation.assemble_matrices();
         contact.set_normal_forces(scene.normal_stress());
         pore_pressure  = scene.pore_pressure();

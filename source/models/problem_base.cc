@@ -48,14 +48,7 @@ namespace rsfcycle
     discretisation.assemble_matrices();
     if (scene.split_fault())
       discretisation.tie_fault_sides();
-    contact.setup(discretisation.dof_handler,
-                  discretisation.scalar_dof_handler,
-                  discretisation.hanging_constraints,
-                  *discretisation.partitioner,
-                  discretisation.fixed,
-                  [this](const Point<dim> &p) {
-                    return scene.friction_parameters(p);
-                  });
+    this->setup_contact();
   }
 
 

@@ -64,6 +64,13 @@ namespace rsfcycle
                 bool                       lumped_mass = false);
 
       /**
+       * The contact quadrature on the discretisation's contact faces (after
+       * its boundary conditions), with the scene's friction parameters.
+       */
+      void
+      setup_contact();
+
+      /**
        * The lines "Scene: NAME (dD[, antiplane])" and "Mesh: N cells, L
        * levels, U unknowns, C contact nodes" of the description in log.txt.
        */

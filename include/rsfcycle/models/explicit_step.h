@@ -120,6 +120,8 @@ namespace rsfcycle
       const friction::Law                              &law;
       std::function<double(const dealii::Point<dim> &)> along_base;
       std::vector<friction::NodePotential>              potentials;
+      /** f: the body force and the prestress (constant). */
+      la::Vector load;
       /** Per owned dof: the lumped mass and the diagonal of C. */
       std::vector<double> mass, damping;
       /** Per owned dof: whether it is a contact node's tangential dof. */

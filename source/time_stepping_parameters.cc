@@ -33,7 +33,7 @@ namespace rsfcycle
       "x the mesh's stable step (shown in the log); implicit-explicit: "
       "implicit while the step the Controller allows is at least 16 "
       "explicit steps, explicit while it is shorter (inside events), back "
-      "when the implicit step's error estimate allows 32 explicit steps "
+      "when a trial of up to 32 implicit steps reaches 32 explicit steps "
       "(doc/model.md 8.3a; a model without an explicit step keeps the "
       "implicit one and says so in the log)");
     prm.declare_entry("Courant number",

@@ -124,10 +124,12 @@ end
 PRM
 }
 # Integrator = implicit-explicit (tests/implicit_explicit_event.prm.in):
-# its first 290 steps are explicit, so the kill after 120 rows falls among
-# them, and the resumed run changes to implicit steps and back
+# its first 256 steps are explicit, so the kill after 120 rows falls among
+# them, and the resumed run takes the trial of implicit steps that ends
+# them; the first 200 s, before the event
 make_implicit_explicit_prm() {
   sed -e "s|@SOURCE_DIR@|$src/tests|" -e "s|^set Output directory .*|set Output directory = $1|" \
+    -e "s|^set End time .*|set End time = 200|" \
     "$src/tests/implicit_explicit_event.prm.in" > "$1.prm"
   printf 'subsection Output\n  set Checkpoint steps = 20\n  set Writers = time series, base profile, events\nend\n' >> "$1.prm"
 }

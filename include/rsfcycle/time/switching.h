@@ -25,17 +25,24 @@ namespace rsfcycle
      * implicit step solves the whole body (tens of multigrid cycles, each
      * some stiffness products), an explicit one applies the stiffness once:
      * R is the least number of explicit steps an implicit step must stand
-     * for. Both take the same state, so a change costs nothing. From
-     * explicit steps the run returns when the implicit step's own error
-     * estimate allows 2 R explicit steps at once (the hysteresis): after
-     * 256 explicit steps a probe solves one implicit step of 2 R tau_e and
-     * two of R tau_e and compares them as the step-size control does; if
-     * the distance is within `Tolerance`, the two steps are accepted and
-     * the control takes over at 2 R tau_e, else the interval to the next
-     * probe doubles (at most 4096 steps). Every decision counts steps, so a run
-     * is the same on any number of ranks and after a resume. A model without an
-     * explicit step (viscous materials, a split fault) keeps the implicit step
-     * and says so once in the log.
+     * for. Both take the same state, so a change costs nothing.
+     *
+     * The way back is a trial: after 256 explicit steps the run takes up to
+     * 32 implicit steps under the control, started at 2 R tau_e. Every one
+     * of them is accepted by the error estimate, as in an implicit run; the
+     * trial succeeds as soon as the controlled step reaches 2 R tau_e (the
+     * hysteresis), and the run stays implicit. Otherwise the run returns to
+     * explicit steps and the interval to the next trial doubles (at most
+     * 4096 steps). A trial is a window, not one comparison: the explicit
+     * step has no numerical dissipation, so waves the mesh traps after an
+     * event ring on until the implicit steps (generalized-alpha with
+     * Spectral radius < 1) damp them; an estimate taken from the undamped
+     * state would keep the run explicit long after the event.
+     *
+     * Every decision counts steps, so a run is the same on any number of
+     * ranks and after a resume. A model without an explicit step (viscous
+     * materials, a split fault) keeps the implicit step and says so once in
+     * the log.
      */
     template <typename State>
     class Switching : public Integrator<State>
@@ -68,24 +75,28 @@ namespace rsfcycle
             implicit->advance(current, t, end_time);
             last = implicit->last_step_size();
             work = implicit->n_spatial_problems();
-            if (refusal.empty() &&
-                implicit->step_size() < ratio * explicit_step && t < end_time)
+            if (trial > 0)
+              end_trial_step(t);
+            else if (refusal.empty() &&
+                     implicit->step_size() < ratio * explicit_step &&
+                     t < end_time)
               {
-                explicit_mode = true;
-                interval = countdown = first_interval;
-                note = "explicit steps of " + format_number(explicit_step) +
-                       " s from t = " + format_number(t) +
-                       " s (the implicit step would take " +
-                       format_number(implicit->step_size()) + " s)";
+                interval = first_interval;
+                to_explicit(t,
+                            "the implicit step would take " +
+                              format_number(implicit->step_size()) + " s");
               }
             return;
           }
-        work = 0;
-        if (countdown == 0 && probe(current, t, end_time))
-          return;
+        if (countdown == 0 && t + 2 * ratio * explicit_step <= end_time)
+          {
+            start_trial();
+            advance(current, t, end_time);
+            return;
+          }
         explicit_steps->advance(current, t, end_time);
         last = explicit_steps->last_step_size();
-        work += 1;
+        work = 1;
         if (countdown > 0)
           --countdown;
       }
@@ -111,14 +122,15 @@ namespace rsfcycle
       std::string
       work_unit() const override
       {
-        return explicit_mode ? "spatial problems and explicit steps" :
-                               "spatial problems";
+        return refusal.empty() ? "spatial problems and explicit steps" :
+                                 "spatial problems";
       }
 
       /**
        * "switching/" and the implicit control's name; values: whether the
-       * run takes explicit steps, the steps to the next probe, the
-       * interval, then the control's values.
+       * run takes explicit steps, the steps to the next trial, the
+       * interval, the implicit steps left in a trial, then the control's
+       * values.
        */
       IntegratorMemory<State>
       memory() const override
@@ -130,7 +142,8 @@ namespace rsfcycle
         memory.values.insert(memory.values.begin(),
                              {explicit_mode ? 1. : 0.,
                               static_cast<double>(countdown),
-                              static_cast<double>(interval)});
+                              static_cast<double>(interval),
+                              static_cast<double>(trial)});
         return memory;
       }
 
@@ -138,7 +151,8 @@ namespace rsfcycle
       restore(const IntegratorMemory<State> &memory) override
       {
         const std::string prefix = "switching/";
-        if (memory.controller.rfind(prefix, 0) != 0 || memory.values.size() < 3)
+        if (memory.controller.rfind(prefix, 0) != 0 ||
+            memory.values.size() < n_values)
           {
             implicit->restore(memory);
             return;
@@ -146,11 +160,13 @@ namespace rsfcycle
         explicit_mode = memory.values[0] != 0;
         countdown     = static_cast<unsigned int>(memory.values[1]);
         interval      = static_cast<unsigned int>(memory.values[2]);
+        trial         = static_cast<unsigned int>(memory.values[3]);
         if (!explicit_mode)
           {
             IntegratorMemory<State> inner = memory;
             inner.controller = memory.controller.substr(prefix.size());
-            inner.values.erase(inner.values.begin(), inner.values.begin() + 3);
+            inner.values.erase(inner.values.begin(),
+                               inner.values.begin() + n_values);
             implicit->restore(inner);
           }
       }
@@ -164,47 +180,59 @@ namespace rsfcycle
       }
 
     private:
-      /**
-       * One implicit step of 2 R tau_e against two of R tau_e from
-       * `current`; within Tolerance: the two accepted, the control
-       * restarted at 2 R tau_e, true. Else the next probe later, false.
-       */
-      bool
-      probe(State &current, double &t, const double end_time)
+      /** From implicit to explicit steps at `t`, `why` for the log. */
+      void
+      to_explicit(const double t, const std::string &why)
       {
-        const double tau = 2 * ratio * explicit_step;
-        if (t + tau > end_time)
-          return false;
-        const auto full = implicit_model.step(current, t, tau, nullptr);
-        auto       half = implicit_model.step(current, t, tau / 2, nullptr);
-        auto       twice =
-          half ? implicit_model.step(*half, t + tau / 2, tau / 2, nullptr) :
-                       std::optional<State>();
-        work = 3;
-        if (full && twice &&
-            implicit_model.error_distance(*full, *twice) <= ts.tolerance)
+        explicit_mode = true;
+        countdown     = interval;
+        note          = "explicit steps of " + format_number(explicit_step) +
+               " s from t = " + format_number(t) + " s (" + why + ")";
+      }
+
+      /** The implicit control restarted at 2 R tau_e for a trial. */
+      void
+      start_trial()
+      {
+        explicit_mode                  = false;
+        trial                          = trial_steps;
+        TimeSteppingParameters restart = ts;
+        restart.initial_step           = 2 * ratio * explicit_step;
+        implicit = make_step_size_control(restart, implicit_model);
+      }
+
+      /**
+       * After a trial's implicit step: success once the controlled step
+       * reaches 2 R tau_e; after the trial's last step without it, back to
+       * explicit steps with the interval doubled (not logged: the log
+       * says when the run takes implicit steps again).
+       */
+      void
+      end_trial_step(const double t)
+      {
+        if (implicit->step_size() >= 2 * ratio * explicit_step)
           {
-            current = std::move(*twice);
-            t += tau;
-            last                           = tau / 2;
-            explicit_mode                  = false;
-            TimeSteppingParameters restart = ts;
-            restart.initial_step           = tau;
-            implicit = make_step_size_control(restart, implicit_model);
-            note     = "implicit steps from t = " + format_number(t) +
-                   " s (their error estimate allows " + format_number(tau) +
-                   " s)";
-            return true;
+            trial = 0;
+            note  = "implicit steps from t = " + format_number(t) +
+                   " s (their error estimate allows " +
+                   format_number(implicit->step_size()) + " s)";
+            return;
           }
-        interval  = std::min(2 * interval, last_interval);
-        countdown = interval;
-        return false;
+        if (--trial > 0)
+          return;
+        explicit_mode = true;
+        interval      = std::min(2 * interval, last_interval);
+        countdown     = interval;
       }
 
       /** R: the explicit steps an implicit step must stand for. */
       static constexpr double       ratio          = 16;
       static constexpr unsigned int first_interval = 256;
       static constexpr unsigned int last_interval  = 4096;
+      /** The implicit steps of a trial at most. */
+      static constexpr unsigned int trial_steps = 32;
+      /** The values of memory() before the implicit control's. */
+      static constexpr unsigned int n_values = 4;
 
       const TimeSteppingParameters      &ts;
       ImplicitModel<State>              &implicit_model;
@@ -217,6 +245,7 @@ namespace rsfcycle
       bool                                  explicit_mode = false;
       unsigned int                          countdown     = 0;
       unsigned int                          interval      = 0;
+      unsigned int                          trial         = 0;
       double                                last          = 0;
       unsigned int                          work          = 0;
       std::string                           note;

@@ -4,9 +4,11 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <limits>
+#include <map>
 #include <rsfcycle/format.h>
 #include <rsfcycle/friction/local_solve.h>
 #include <rsfcycle/models/explicit_step.h>
+#include <rsfcycle/physics/split_fault.h>
 
 namespace rsfcycle
 {
@@ -79,32 +81,61 @@ namespace rsfcycle
       const la::LocalMatrix &M = discretisation.mass_local;
       const la::LocalMatrix &C = discretisation.viscosity_local;
       const unsigned int     n = M.m();
+      // a split fault's pairs (slip and mean): their partners' local index
+      const auto &tie = discretisation.fault_tie;
+      if (!tie.empty())
+        {
+          partner.assign(n, dealii::numbers::invalid_unsigned_int);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto g = discretisation.partitioner->local_to_global(i);
+              if (tie.kind[g] == physics::tie_slip ||
+                  tie.kind[g] == physics::tie_mean)
+                partner[i] = discretisation.local_index(tie.partner[g]);
+            }
+          mass_coupling.assign(n, 0.);
+          damping_coupling.assign(n, 0.);
+          discretisation.reinit(mass_diagonal);
+          discretisation.reinit(damping_diagonal);
+          discretisation.reinit(rho_pairs);
+        }
+      const auto paired = [&](const unsigned int i) {
+        return !partner.empty() &&
+               partner[i] != dealii::numbers::invalid_unsigned_int;
+      };
       mass.assign(n, 0.);
       damping.assign(n, 0.);
-      bool diagonal = true;
       for (unsigned int i = 0; i < n; ++i)
         {
+          // (a pair's coupling stays out of the lumped mass)
           for (unsigned int j = M.row_begin(i); j < M.row_end(i); ++j)
-            mass[i] += M.value(j);
+            if (paired(i) && M.column(j) == partner[i])
+              mass_coupling[i] = M.value(j);
+            else
+              mass[i] += M.value(j);
           for (unsigned int j = C.row_begin(i); j < C.row_end(i); ++j)
             if (C.column(j) == i)
               damping[i] = C.value(j);
-            else if (C.value(j) != 0 && !discretisation.fixed[i])
-              diagonal = false;
+            else if (paired(i) && C.column(j) == partner[i])
+              damping_coupling[i] = C.value(j);
+        }
+      if (!tie.empty())
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            mass_diagonal.local_element(i)    = mass[i];
+            damping_diagonal.local_element(i) = damping[i];
+          }
+      if (!tie.empty())
+        {
+          mass_diagonal.update_ghost_values();
+          damping_diagonal.update_ghost_values();
         }
       on_contact.assign(n, false);
       for (const auto &node : contact.contact_set().nodes)
         for (unsigned int l = 0; l < node.n_dofs; ++l)
           on_contact[node.dofs[l]] = true;
-      const MPI_Comm comm = discretisation.triangulation.get_communicator();
-      if (dealii::Utilities::MPI::max(discretisation.fault_tie.empty() ? 0 : 1,
-                                      comm) > 0)
-        refused = "a fault-opposite side (Boundary roles) has no explicit "
-                  "step yet (its tied unknowns have no lumped mass)";
-      else if (dealii::Utilities::MPI::min(diagonal ? 1 : 0, comm) == 0)
-        refused = "the damping matrix C is not diagonal (Kelvin-Voigt "
-                  "viscosity, or an absorbing face not aligned with the "
-                  "axes); the explicit step needs a lumped C";
+      find_blocks();
+      discretisation.reinit(damping_force);
       const auto [lambda, h] = largest_cell_eigenvalue(discretisation);
       stable                 = 2 / std::sqrt(lambda);
       h_min                  = h;
@@ -127,29 +158,41 @@ namespace rsfcycle
       la::Vector r;
       r.reinit(load, true);
       discretisation.stiffness_local.residual(r, next.u, load);
+      discretisation.viscosity_local.vmult(damping_force, v_star);
+      r -= damping_force;
       const unsigned int n = mass.size();
-      for (unsigned int i = 0; i < n; ++i)
-        r.local_element(i) -= damping[i] * v_star.local_element(i);
 
+      const bool split = !partner.empty();
+      if (split)
+        pair_right_hand_sides(r, v_star, tau);
       next.v = v_star;
       for (unsigned int i = 0; i < n; ++i)
-        if (!discretisation.fixed[i] && !on_contact[i])
+        if (single[i])
           next.v.local_element(i) +=
             r.local_element(i) / (2 * mass[i] / tau + damping[i]);
+      solve_blocks(r, tau, next.v);
+
+      // a split fault's normal stress: the + side's reaction at u_{n+1}
+      const auto &nodes = contact.contact_set().nodes;
+      if (!discretisation.fault_tie.normal_of.empty())
+        {
+          if (!physics::split_normal_stresses(
+                discretisation, contact, next.u, next.normal_stress))
+            {
+              failure = "t = " + format_number(t + tau) + " s, explicit step " +
+                        format_number(tau) +
+                        " s: a fault node lost its compression (the normal "
+                        "stress changed by the slip is not positive)";
+              return {};
+            }
+          for (unsigned int k = 0; k < nodes.size(); ++k)
+            potentials[k].normal_force =
+              next.normal_stress[k] * contact.nodes()[k].weight;
+        }
 
       // the contact: the state from the old slip rate, then from the mean
       std::vector<double> alpha(old.alpha.size());
-      const auto         &nodes = contact.contact_set().nodes;
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          double v2 = 0;
-          for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
-            v2 += std::pow(old.v.local_element(nodes[k].dofs[l]), 2);
-          alpha[k] = law.update_state(contact.nodes()[k].params,
-                                      old.alpha[k],
-                                      std::sqrt(v2),
-                                      tau);
-        }
+      update_states(old, old.v, tau, alpha);
       solve_contact(r, v_star, alpha, tau, next.v, nullptr);
       update_states(old, next.v, tau, alpha);
       solve_contact(r, v_star, alpha, tau, next.v, &next.shear_traction);
@@ -157,33 +200,46 @@ namespace rsfcycle
       next.alpha = std::move(alpha);
 
       discretisation.set_fixed_values(next.v, t + tau);
+      if (split)
+        solve_pairs(tau, next.v);
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
       next.a = next.v;
       next.a -= v_star;
       next.a *= 2 / tau;
 
+      if (!finite(next, t, tau))
+        return {};
+      return next;
+    }
+
+
+    template <int dim>
+    bool
+    ExplicitStep<dim>::finite(const BodyState &next,
+                              const double     t,
+                              const double     tau)
+    {
       // every rank rejects the step alike
+      const auto  &nodes = contact.contact_set().nodes;
       const double norms = next.u.l2_norm() + next.v.l2_norm();
       std::string  bad_state;
       for (unsigned int k = 0; k < nodes.size() && bad_state.empty(); ++k)
         if (!std::isfinite(next.alpha[k]))
           bad_state = format_number(along_base(contact.nodes()[k].position));
       const MPI_Comm comm = discretisation.triangulation.get_communicator();
-      if (!std::isfinite(norms) ||
-          dealii::Utilities::MPI::max(bad_state.empty() ? 0 : 1, comm) > 0)
-        {
-          failure = "t = " + format_number(t + tau) + " s, explicit step " +
-                    format_number(tau) + " s: non-finite " +
-                    (std::isfinite(norms) ?
-                       "friction state" +
-                         (bad_state.empty() ?
-                            std::string(" on another rank") :
-                            " at the base node at s = " + bad_state + " m") :
-                       std::string("displacement or velocity"));
-          return {};
-        }
-      return next;
+      if (std::isfinite(norms) &&
+          dealii::Utilities::MPI::max(bad_state.empty() ? 0 : 1, comm) == 0)
+        return true;
+      failure = "t = " + format_number(t + tau) + " s, explicit step " +
+                format_number(tau) + " s: non-finite " +
+                (std::isfinite(norms) ?
+                   "friction state" +
+                     (bad_state.empty() ?
+                        std::string(" on another rank") :
+                        " at the base node at s = " + bad_state + " m") :
+                   std::string("displacement or velocity"));
+      return false;
     }
 
 
@@ -209,6 +265,14 @@ namespace rsfcycle
               a[l]         = 2 * mass[i] / tau + damping[i];
               rho[l]   = r.local_element(i) + a[l] * v_star.local_element(i);
               guess[l] = v.local_element(i);
+              if (!partner.empty() &&
+                  partner[i] != dealii::numbers::invalid_unsigned_int)
+                {
+                  // the pair's mean eliminated
+                  const auto [a_pair, rho_pair] = condensed(i, tau);
+                  a[l] -= a_pair;
+                  rho[l] = rho_pairs.local_element(i) - rho_pair;
+                }
             }
           std::array<double, 2> x{};
           if (nodes[k].n_dofs == 1)
@@ -235,6 +299,149 @@ namespace rsfcycle
           if (traction)
             (*traction)[k] = std::sqrt(f2) / contact.nodes()[k].weight;
         }
+    }
+
+
+    template <int dim>
+    void
+    ExplicitStep<dim>::find_blocks()
+    {
+      // the free dofs off the contact and the pairs, joined where C couples
+      // two of them (union-find): a vertex's dashpot on a face not aligned
+      // with the axes joins the vertex's components
+      const la::LocalMatrix &C = discretisation.viscosity_local;
+      const unsigned int     n = mass.size();
+      std::vector<bool>      free(n);
+      for (unsigned int i = 0; i < n; ++i)
+        free[i] = !discretisation.fixed[i] && !on_contact[i] &&
+                  (partner.empty() ||
+                   partner[i] == dealii::numbers::invalid_unsigned_int);
+      std::vector<unsigned int> root(n);
+      for (unsigned int i = 0; i < n; ++i)
+        root[i] = i;
+      const auto find = [&root](unsigned int i) {
+        while (root[i] != i)
+          i = root[i] = root[root[i]];
+        return i;
+      };
+      for (unsigned int i = 0; i < n; ++i)
+        if (free[i])
+          for (unsigned int j = C.row_begin(i); j < C.row_end(i); ++j)
+            if (const unsigned int c = C.column(j);
+                c != i && c < n && free[c] && C.value(j) != 0)
+              root[find(i)] = find(c);
+      std::map<unsigned int, std::vector<unsigned int>> components;
+      for (unsigned int i = 0; i < n; ++i)
+        if (free[i])
+          components[find(i)].push_back(i);
+      single.assign(n, false);
+      std::size_t largest = 1;
+      for (auto &[r, dofs] : components)
+        if (dofs.size() == 1)
+          single[dofs[0]] = true;
+        else
+          {
+            largest = std::max(largest, dofs.size());
+            Block block{dofs, dealii::FullMatrix<double>(dofs.size())};
+            for (unsigned int k = 0; k < dofs.size(); ++k)
+              for (unsigned int j = C.row_begin(dofs[k]);
+                   j < C.row_end(dofs[k]);
+                   ++j)
+                for (unsigned int l = 0; l < dofs.size(); ++l)
+                  if (C.column(j) == dofs[l])
+                    block.damping(k, l) = C.value(j);
+            blocks.push_back(std::move(block));
+          }
+      const MPI_Comm comm = discretisation.triangulation.get_communicator();
+      if (dealii::Utilities::MPI::max(static_cast<unsigned int>(largest),
+                                      comm) > (dim == 3 ? 3u : 2u))
+        refused = "the damping matrix C couples the dofs of different nodes "
+                  "(Kelvin-Voigt viscosity); the explicit step needs C "
+                  "lumped at the nodes";
+    }
+
+
+    template <int dim>
+    void
+    ExplicitStep<dim>::solve_blocks(const la::Vector &r,
+                                    const double      tau,
+                                    la::Vector       &v) const
+    {
+      for (const auto &block : blocks)
+        {
+          const unsigned int         m = block.dofs.size();
+          dealii::FullMatrix<double> A(block.damping);
+          dealii::Vector<double>     rhs(m), x(m);
+          for (unsigned int k = 0; k < m; ++k)
+            {
+              A(k, k) += 2 * mass[block.dofs[k]] / tau;
+              rhs(k) = r.local_element(block.dofs[k]);
+            }
+          A.gauss_jordan();
+          A.vmult(x, rhs);
+          for (unsigned int k = 0; k < m; ++k)
+            v.local_element(block.dofs[k]) += x(k);
+        }
+    }
+
+
+    template <int dim>
+    void
+    ExplicitStep<dim>::pair_right_hand_sides(const la::Vector &r,
+                                             const la::Vector &v_star,
+                                             const double      tau)
+    {
+      v_star.update_ghost_values();
+      for (unsigned int i = 0; i < partner.size(); ++i)
+        if (partner[i] != dealii::numbers::invalid_unsigned_int)
+          rho_pairs.local_element(i) =
+            r.local_element(i) +
+            (2 * mass[i] / tau + damping[i]) * v_star.local_element(i) +
+            (2 * mass_coupling[i] / tau + damping_coupling[i]) *
+              v_star.local_element(partner[i]);
+      rho_pairs.update_ghost_values();
+    }
+
+
+    template <int dim>
+    std::pair<double, double>
+    ExplicitStep<dim>::condensed(const unsigned int i, const double tau) const
+    {
+      const unsigned int p = partner[i];
+      const double a_ip    = 2 * mass_coupling[i] / tau + damping_coupling[i];
+      const double a_pp    = 2 * mass_diagonal.local_element(p) / tau +
+                          damping_diagonal.local_element(p);
+      return {a_ip * a_ip / a_pp, a_ip * rho_pairs.local_element(p) / a_pp};
+    }
+
+
+    template <int dim>
+    void
+    ExplicitStep<dim>::solve_pairs(const double tau, la::Vector &v) const
+    {
+      // a free slip off the contact (none in the shipped meshes) first,
+      // then every free mean from its slip (ghosts exchanged between)
+      const auto &tie          = discretisation.fault_tie;
+      const auto  free_of_kind = [&](const unsigned int i, const auto kind) {
+        return partner[i] != dealii::numbers::invalid_unsigned_int &&
+               !discretisation.fixed[i] && !on_contact[i] &&
+               tie.kind[discretisation.partitioner->local_to_global(i)] == kind;
+      };
+      for (unsigned int i = 0; i < partner.size(); ++i)
+        if (free_of_kind(i, physics::tie_slip))
+          {
+            const auto [a_pair, rho_pair] = condensed(i, tau);
+            v.local_element(i) = (rho_pairs.local_element(i) - rho_pair) /
+                                 (2 * mass[i] / tau + damping[i] - a_pair);
+          }
+      v.update_ghost_values();
+      for (unsigned int i = 0; i < partner.size(); ++i)
+        if (free_of_kind(i, physics::tie_mean))
+          v.local_element(i) =
+            (rho_pairs.local_element(i) -
+             (2 * mass_coupling[i] / tau + damping_coupling[i]) *
+               v.local_element(partner[i])) /
+            (2 * mass[i] / tau + damping[i]);
     }
 
 

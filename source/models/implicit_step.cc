@@ -2,6 +2,7 @@
 #include <cmath>
 #include <rsfcycle/format.h>
 #include <rsfcycle/models/implicit_step.h>
+#include <rsfcycle/physics/split_fault.h>
 #include <rsfcycle/time/rate_state_coupling.h>
 #include <sstream>
 
@@ -375,35 +376,13 @@ namespace rsfcycle
     {
       BodyState end;
       advance(old, w, tau, end);
-      const bool compressed = split_normal_stresses(end.u, stresses);
+      const bool compressed = physics::split_normal_stresses(discretisation,
+                                                             contact,
+                                                             end.u,
+                                                             stresses);
       for (unsigned int k = 0; k < stresses.size(); ++k)
         potentials[k].normal_force = stresses[k] * contact.nodes()[k].weight;
       return compressed;
-    }
-
-
-    template <int dim>
-    bool
-    ImplicitStep<dim>::split_normal_stresses(
-      const la::Vector    &u,
-      std::vector<double> &stresses) const
-    {
-      u.update_ghost_values();
-      const auto &rows  = discretisation.fault_normal_rows;
-      const auto &nodes = contact.contact_set().nodes;
-      stresses.resize(nodes.size());
-      bool compressed = true;
-      for (unsigned int k = 0; k < nodes.size(); ++k)
-        {
-          double force = contact.nodes()[k].normal_force;
-          for (const auto &[j, weight] : rows.at(nodes[k].dofs[0]))
-            force += weight * u.local_element(j);
-          stresses[k] = force / contact.nodes()[k].weight;
-          compressed  = compressed && force > 0;
-        }
-      return dealii::Utilities::MPI::min(
-               compressed ? 1 : 0,
-               discretisation.triangulation.get_communicator()) == 1;
     }
 
 

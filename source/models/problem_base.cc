@@ -390,7 +390,10 @@ namespace rsfcycle
         if (split_normal && Utilities::MPI::max(normal.empty() ? 0 : 1,
                                                 discretisation.triangulation
                                                   .get_communicator()) == 0)
-          implicit_step->split_normal_stresses(state.u, normal);
+          physics::split_normal_stresses(discretisation,
+                                         contact,
+                                         state.u,
+                                         normal);
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
             const auto  &p = nodes[k].params;

@@ -285,6 +285,42 @@ namespace rsfcycle
     }
 
 
+    template <int dim>
+    bool
+    split_normal_stresses(const Discretisation<dim>    &discretisation,
+                          const ContactQuadrature<dim> &contact,
+                          const la::Vector             &u,
+                          std::vector<double>          &stresses)
+    {
+      u.update_ghost_values();
+      const auto &rows  = discretisation.fault_normal_rows;
+      const auto &nodes = contact.contact_set().nodes;
+      stresses.resize(nodes.size());
+      bool compressed = true;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          double force = contact.nodes()[k].normal_force;
+          for (const auto &[j, weight] : rows.at(nodes[k].dofs[0]))
+            force += weight * u.local_element(j);
+          stresses[k] = force / contact.nodes()[k].weight;
+          compressed  = compressed && force > 0;
+        }
+      return Utilities::MPI::min(
+               compressed ? 1 : 0,
+               discretisation.triangulation.get_communicator()) == 1;
+    }
+
+
+    template bool
+    split_normal_stresses(const Discretisation<2> &,
+                          const ContactQuadrature<2> &,
+                          const la::Vector &,
+                          std::vector<double> &);
+    template bool
+    split_normal_stresses(const Discretisation<3> &,
+                          const ContactQuadrature<3> &,
+                          const la::Vector &,
+                          std::vector<double> &);
     template void
     Discretisation<2>::tie_fault_sides();
     template void

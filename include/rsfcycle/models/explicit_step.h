@@ -3,6 +3,7 @@
 #define rsfcycle_models_explicit_step_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/lac/full_matrix.h>
 #include <functional>
 #include <optional>
 #include <rsfcycle/friction/law.h>
@@ -21,20 +22,34 @@ namespace rsfcycle
      * One explicit step of the elastic continuum with inertia (`Time
      * stepping/Integrator = explicit`): Newmark's explicit member (beta =
      * 0, gamma = 1/2, central differences) with the lumped mass M_L (the
-     * row sums of M) and the diagonal damping C (the absorbing faces'
-     * lumped dashpots),
+     * row sums of M) and the damping C of the absorbing faces' dashpots,
+     * lumped at the vertices (a dim x dim block per vertex on a face not
+     * aligned with the axes, solved as such; couplings outside a vertex or
+     * a split fault's pair, as at a fault's end on an absorbing face, act
+     * at v*, on the right-hand side),
      *   u_{n+1} = u_n + tau v_n + tau^2/2 a_n,   v* = v_n + tau/2 a_n,
      *   (2/tau M_L + C) v_{n+1} = (2/tau M_L + C) v* + f - K u_{n+1} - C v*
      *                             - the friction force,
      *   a_{n+1} = 2 (v_{n+1} - v*) / tau,
-     * every dof on its own: K is applied as a product, and on a contact
-     * node the slip rate solves the node-local problem of the implicit
+     * every dof (or vertex) on its own: K is applied as a product, and on a
+     * contact node the slip rate solves the node-local problem of the implicit
      * path's Gauss-Seidel sweep (friction::solve_local_problem) with the
      * node's friction potential at the state of t_{n+1}. The state takes
      * the law's closed-form update with the mean slip rate of the step, in
      * two passes (the state from the old slip rate, the slip rate, the
      * state from the mean, the slip rate again). The state (u, v, a,
      * alpha) is the implicit step's, so that a run may take either.
+     *
+     * A split fault (physics/split_fault.h: the slip s and the mean m of
+     * each tangential pair, one shared normal w): the tie makes the lumped
+     * mass a 2x2 block per pair, A = 2/tau M~ + C~ on (s, m), so the pair
+     * is solved together, as split-node codes do: the slip from the
+     * node-local problem with a_s - a_sm^2/a_m in place of the diagonal
+     * and rho_s - a_sm rho_m/a_m as its right-hand side, then the mean
+     * from its own row, m = (rho_m - a_ms s)/a_m. The friction's normal
+     * stress is the + side's elastic reaction at u_{n+1}
+     * (physics::split_normal_stresses, the implicit step's); a node that
+     * loses its compression fails the step.
      *
      * Stable for tau <= stable_step() = 2/omega_max: omega_max^2, the
      * largest eigenvalue of M_L^-1 K, is bounded from above by the largest
@@ -71,8 +86,9 @@ namespace rsfcycle
 
       /**
        * Why the discretisation has no explicit step (a damping matrix C
-       * that is not diagonal: Kelvin-Voigt viscosity, or absorbing faces
-       * not aligned with the axes; a split fault); empty: it has one.
+       * that is not diagonal outside a split fault's pairs: Kelvin-Voigt
+       * viscosity, or absorbing faces not aligned with the axes); empty:
+       * it has one.
        */
       const std::string &
       refusal() const
@@ -109,6 +125,41 @@ namespace rsfcycle
        * The states of t + tau from the old ones with the mean slip rate of
        * v_old and v.
        */
+      /**
+       * Whether the step's displacement, velocity and states are finite on
+       * every rank (collective); else the failure's text.
+       */
+      bool
+      finite(const BodyState &next, double t, double tau);
+
+      /**
+       * The blocks of C (find_blocks): the free dofs off the contact and
+       * the pairs that a vertex's dashpot couples, and single[i] for those
+       * that nothing couples; refused if C couples dofs of different nodes.
+       */
+      void
+      find_blocks();
+
+      /** v += (2/tau M_L + C)^-1 r on every block. */
+      void
+      solve_blocks(const la::Vector &r, double tau, la::Vector &v) const;
+
+      /**
+       * rho = r + A v* of a split fault's paired dofs (A = 2/tau M + C with
+       * the pair's coupling), ghosts updated; v of the paired dofs that are
+       * neither on the contact nor prescribed, after the contact's.
+       */
+      void
+      pair_right_hand_sides(const la::Vector &r,
+                            const la::Vector &v_star,
+                            double            tau);
+      void
+      solve_pairs(double tau, la::Vector &v) const;
+
+      /** The pair's a_sm^2 / a_m and a_sm rho_m / a_m of paired dof i. */
+      std::pair<double, double>
+      condensed(unsigned int i, double tau) const;
+
       void
       update_states(const BodyState     &old,
                     const la::Vector    &v,
@@ -126,8 +177,27 @@ namespace rsfcycle
       std::vector<double> mass, damping;
       /** Per owned dof: whether it is a contact node's tangential dof. */
       std::vector<bool> on_contact;
-      double            stable = 0, h_min = 0;
-      std::string       refused, failure;
+      /**
+       * A split fault: per owned dof the local index of its partner
+       * (invalid: none) and the coupling M~, C~ to it; the diagonals of M~
+       * and C~ with the partners' as ghosts; rho of the paired dofs.
+       */
+      std::vector<unsigned int> partner;
+      std::vector<double>       mass_coupling, damping_coupling;
+      /** A vertex's dofs that C couples, and C among them. */
+      struct Block
+      {
+        std::vector<unsigned int>  dofs;
+        dealii::FullMatrix<double> damping;
+      };
+      std::vector<Block> blocks;
+      /** Per owned dof: free, off the contact and the pairs, in no block. */
+      std::vector<bool> single;
+      /** C v* of a step. */
+      la::Vector  damping_force;
+      la::Vector  mass_diagonal, damping_diagonal, rho_pairs;
+      double      stable = 0, h_min = 0;
+      std::string refused, failure;
     };
   } // namespace models
 } // namespace rsfcycle

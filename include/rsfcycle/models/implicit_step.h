@@ -84,16 +84,6 @@ namespace rsfcycle
         return failure;
       }
 
-      /**
-       * A split fault's normal stress per contact node of this rank at the
-       * displacement u (Discretisation::fault_normal_rows),
-       * (w_k sigma_0 + n_k . u) / w_k [Pa], into `stresses`; false if a
-       * node of any rank is not in compression (collective).
-       */
-      bool
-      split_normal_stresses(const la::Vector    &u,
-                            std::vector<double> &stresses) const;
-
     private:
       /**
        * r = f - K (u_n + d[0] v_n + d[1] a_n) (+ M (m[0] v_n + m[1] a_n),
@@ -159,8 +149,8 @@ namespace rsfcycle
               BodyState        &next) const;
 
       /**
-       * A split fault's normal coupling: split_normal_stresses() at the
-       * displacement of the step's end for w, into the potentials (as
+       * A split fault's normal coupling: physics::split_normal_stresses() at
+       * the displacement of the step's end for w, into the potentials (as
        * forces) and `stresses`; false if a node is not in compression.
        */
       bool

@@ -2,6 +2,7 @@
 #ifndef rsfcycle_physics_split_fault_h
 #define rsfcycle_physics_split_fault_h
 
+#include <rsfcycle/physics/contact_quadrature.h>
 #include <rsfcycle/physics/discretisation.h>
 #include <rsfcycle/physics/global_system.h>
 
@@ -104,6 +105,20 @@ namespace rsfcycle
                       const std::vector<unsigned int> &columns,
                       const std::vector<double>       &values,
                       const std::vector<unsigned int> &contact_dofs);
+
+    /**
+     * A split fault's normal stress per contact node of this rank at the
+     * displacement u (Discretisation::fault_normal_rows: the + side's
+     * elastic reaction), (w_k sigma_0 + n_k . u) / w_k [Pa], into
+     * `stresses`; false if a node of any rank is not in compression
+     * (collective).
+     */
+    template <int dim>
+    bool
+    split_normal_stresses(const Discretisation<dim>    &discretisation,
+                          const ContactQuadrature<dim> &contact,
+                          const la::Vector             &u,
+                          std::vector<double>          &stresses);
 
     /** A dof's part in the tie of a split fault (GlobalSystem::tie_kind). */
     enum TieKind : unsigned char

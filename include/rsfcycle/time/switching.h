@@ -31,9 +31,10 @@ namespace rsfcycle
      * 32 implicit steps under the control, started at 2 R tau_e. Every one
      * of them is accepted by the error estimate, as in an implicit run; the
      * trial succeeds as soon as the controlled step reaches 2 R tau_e (the
-     * hysteresis), and the run stays implicit. Otherwise the run returns to
-     * explicit steps and the interval to the next trial doubles (at most
-     * 4096 steps). A trial is a window, not one comparison: the explicit
+     * hysteresis), and the run stays implicit. If the controlled step falls
+     * below R tau_e, or after the 32 steps, the run returns to explicit
+     * steps and the interval to the next trial doubles (at most 4096
+     * steps). A trial is a window, not one comparison: the explicit
      * step has no numerical dissipation, so waves the mesh traps after an
      * event ring on until the implicit steps (generalized-alpha with
      * Spectral radius < 1) damp them; an estimate taken from the undamped
@@ -41,7 +42,7 @@ namespace rsfcycle
      *
      * Every decision counts steps, so a run is the same on any number of
      * ranks and after a resume. A model without an explicit step (viscous
-     * materials, a split fault) keeps the implicit step and says so once in
+     * materials) keeps the implicit step and says so once in
      * the log.
      */
     template <typename State>
@@ -203,8 +204,9 @@ namespace rsfcycle
 
       /**
        * After a trial's implicit step: success once the controlled step
-       * reaches 2 R tau_e; after the trial's last step without it, back to
-       * explicit steps with the interval doubled (not logged: the log
+       * reaches 2 R tau_e; after the trial's last step without it, or once
+       * the controlled step falls below R tau_e, back to explicit steps
+       * with the interval doubled (not logged: the log
        * says when the run takes implicit steps again).
        */
       void
@@ -218,8 +220,11 @@ namespace rsfcycle
                    format_number(implicit->step_size()) + " s)";
             return;
           }
-        if (--trial > 0)
+        // (a step below R tau_e damps nothing an explicit step would not
+        // resolve: the trial ends there)
+        if (--trial > 0 && implicit->step_size() >= ratio * explicit_step)
           return;
+        trial         = 0;
         explicit_mode = true;
         interval      = std::min(2 * interval, last_interval);
         countdown     = interval;

@@ -42,8 +42,8 @@ namespace rsfcycle
       // (the effective normal force, with the pore pressure and the split
       // fault's normal coupling)
       const auto         &normal = normal_forces(state.slip.data(), state.t);
-      std::vector<double> pressures(pore_pressure ? n_own : 0),
-        darcy(darcy_velocity ? n_own : 0);
+      std::vector<double> pressures(pore_pressure ? n_own : 0);
+      std::vector<std::array<double, 2>> darcy(darcy_velocity ? n_own : 0);
       std::vector<std::array<double, 2>> slip(n_own), rate_components(n_own);
       for (unsigned int k = 0; k < n_own; ++k)
         {

@@ -235,7 +235,7 @@ namespace rsfcycle
           if (pore_pressure)
             pressure[i] = sample.pore_pressures[k] / 1e6;
           if (darcy_velocity)
-            darcy[i] = sample.darcy_velocities[k];
+            darcy[i] = sample.darcy_velocities[k][0];
           max_rate = std::max(max_rate, V);
         }
       // a boundary node: the boundary's slip, the next contact node's

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <rsfcycle/format.h>
 #include <rsfcycle/scenes/friction_field.h>
+#include <rsfcycle/scenes/pore_fluid.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -159,6 +160,56 @@ namespace rsfcycle
                           entry.default_value,
                           Patterns::Anything(),
                           entry.documentation);
+      PoreFluid::declare_parameters(prm);
+    }
+
+
+    /**
+     * The pore pressure and Darcy velocity: the expressions of the
+     * subsection, or the diffusion of its `Pore fluid` (PoreFluid).
+     */
+    template <int dim>
+    void
+    FrictionField<dim>::parse_pore_fluid(ParameterHandler  &prm,
+                                         const std::string &section,
+                                         Functions         &functions)
+    {
+      const std::string source = PoreFluid::source(prm);
+      for (const char *name : {"Pore pressure", "Darcy velocity"})
+        if (source != "function" && !prm.get(name).empty())
+          throw std::invalid_argument(
+            section + "/" + name + " = " + prm.get(name) +
+            ": given with Pore fluid/Source = " + source +
+            "; it needs Source = function");
+      const bool diffusing = source != "none" && source != "function";
+      if ((diffusing || !prm.get("Pore pressure").empty()) &&
+          !functions.normal_stress)
+        throw std::invalid_argument(
+          section +
+          (diffusing ? "/Pore fluid/Source = " + source :
+                       "/Pore pressure = " + prm.get("Pore pressure")) +
+          ": needs Normal stress (the effective normal stress is Normal "
+          "stress - the pore pressure)");
+      if (diffusing)
+        {
+          const auto fluid         = PoreFluid::parse<dim>(prm, section);
+          functions.pore_pressure  = fluid.pressure;
+          functions.darcy_velocity = fluid.darcy_velocity;
+          return;
+        }
+      const auto get_of_time = [&](const char *name) {
+        return parse_expression(prm.get(name), section + "/" + name, true);
+      };
+      if (!prm.get("Pore pressure").empty())
+        functions.pore_pressure = get_of_time("Pore pressure");
+      if (!prm.get("Darcy velocity").empty())
+        {
+          if (!functions.pore_pressure)
+            throw std::invalid_argument(
+              section + "/Darcy velocity = " + prm.get("Darcy velocity") +
+              ": needs Pore pressure");
+          functions.darcy_velocity = get_of_time("Darcy velocity");
+        }
     }
 
 
@@ -213,23 +264,7 @@ namespace rsfcycle
           section + "/Shear stress perturbation history = " +
           prm.get("Shear stress perturbation history") +
           ": needs Shear stress perturbation");
-      if (!prm.get("Pore pressure").empty())
-        {
-          if (!functions.normal_stress)
-            throw std::invalid_argument(
-              section + "/Pore pressure = " + prm.get("Pore pressure") +
-              ": needs Normal stress (the effective normal stress is "
-              "Normal stress - Pore pressure)");
-          functions.pore_pressure = get_of_time("Pore pressure");
-        }
-      if (!prm.get("Darcy velocity").empty())
-        {
-          if (!functions.pore_pressure)
-            throw std::invalid_argument(
-              section + "/Darcy velocity = " + prm.get("Darcy velocity") +
-              ": needs Pore pressure");
-          functions.darcy_velocity = get_of_time("Darcy velocity");
-        }
+      parse_pore_fluid(prm, section, functions);
       return FrictionField(functions);
     }
 
@@ -322,14 +357,17 @@ namespace rsfcycle
 
 
     template <int dim>
-    std::optional<double>
+    std::optional<std::array<double, 2>>
     FrictionField<dim>::darcy_velocity(const Point<dim> &x,
                                        const double      t) const
     {
       if (!f.darcy_velocity)
         return {};
       f.darcy_velocity->set_time(t);
-      return f.darcy_velocity->value(x);
+      std::array<double, 2> q = {{f.darcy_velocity->value(x, 0), 0.}};
+      if (f.darcy_velocity->n_components > 1)
+        q[1] = f.darcy_velocity->value(x, 1);
+      return q;
     }
 
 
@@ -396,7 +434,7 @@ namespace rsfcycle
                 *p,
                 "finite and below Normal stress at t = 0");
       if (const auto q = darcy_velocity(x, 0.))
-        require(true, "Darcy velocity", *q, "finite at t = 0");
+        require(true, "Darcy velocity", (*q)[0] + (*q)[1], "finite at t = 0");
     }
 
 

@@ -320,7 +320,7 @@ namespace rsfcycle
 
 
     template <int dim>
-    std::function<double(const Point<dim> &, double)>
+    std::function<std::array<double, 2>(const Point<dim> &, double)>
     MeshFile<dim>::darcy_velocity() const
     {
       if (!friction_field->functions().darcy_velocity)

@@ -185,6 +185,16 @@ check_bp6 pore-pressure-syntax "Friction/Pore pressure" 'subsection Mesh file\ns
 check_bp6 darcy-without-pressure "Darcy velocity" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nend\nend'
 check_bp6 seas-negative-down-dip "Fault stations: -1500 m is negative" 'subsection Output\nsubsection SEAS\nset Fault station names = down-dip\nend\nend'
 check_bp6 seas-origin "Fault stations: 7500 m from the origin 35000" 'subsection Output\nsubsection SEAS\nset Fault station origin = 35e3\nend\nend'
+# The pore pressure diffusing from an injection (Pore fluid/Source =
+# gaussian, point, well) instead of the expressions: not with them, the
+# well only in 3D, the injection node on the mesh, the contact inside the
+# fluid domain, positive coefficients, one plane coordinate in 2D.
+check_bp6 pore-fluid-expression "given with Pore fluid/Source = point" 'subsection Mesh file\nsubsection Friction\nsubsection Pore fluid\nset Source = point\nend\nend\nend'
+check_bp6 pore-fluid-well-2d "Source = well: a Peaceman well needs Dimension = 3" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nset Darcy velocity =\nsubsection Pore fluid\nset Half width = 20000\nset Cell size = 50\nset Plane coordinates = -y\nset Source = well\nend\nend\nend'
+check_bp6 pore-fluid-odd-cells "Cell size = 8000: 2 x Half width / Cell size = 5 must be an even integer" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nset Darcy velocity =\nsubsection Pore fluid\nset Half width = 20000\nset Cell size = 50\nset Plane coordinates = -y\nset Source = point\nset Cell size = 8000\nend\nend\nend'
+check_bp6 pore-fluid-outside "Pore fluid/Half width: the contact point (0, -20000) m" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nset Darcy velocity =\nsubsection Pore fluid\nset Half width = 20000\nset Cell size = 50\nset Plane coordinates = -y\nset Source = point\nset Half width = 10000\nend\nend\nend'
+check_bp6 pore-fluid-porosity "Pore fluid/Porosity = 0: must be > 0" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nset Darcy velocity =\nsubsection Pore fluid\nset Half width = 20000\nset Cell size = 50\nset Plane coordinates = -y\nset Source = point\nset Porosity = 0\nend\nend\nend'
+check_bp6 pore-fluid-coordinates "Plane coordinates = y; x: must be 1 expression" 'subsection Mesh file\nsubsection Friction\nset Pore pressure =\nset Darcy velocity =\nsubsection Pore fluid\nset Half width = 20000\nset Cell size = 50\nset Plane coordinates = -y\nset Source = point\nset Plane coordinates = y; x\nend\nend\nend'
 
 # missing parameter file
 "$exe" no-such-file.prm > /dev/null 2> missing.err

@@ -352,7 +352,8 @@ namespace rsfcycle
         return perturbation_history ? perturbation_history(t) : 0.;
       }
       /** The scene's pore pressure and Darcy velocity (empty: none). */
-      std::function<double(const Point<dim> &, double)> pore_pressure,
+      std::function<double(const Point<dim> &, double)> pore_pressure;
+      std::function<std::array<double, 2>(const Point<dim> &, double)>
         darcy_velocity;
       /**
        * With a pore pressure: every node's position and |sigma_n| (all

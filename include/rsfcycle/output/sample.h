@@ -45,8 +45,11 @@ namespace rsfcycle
       std::vector<double> observation_rates;
       /** With Layout::pore_pressure: p of every node [Pa]. */
       std::vector<double> pore_pressures;
-      /** With Layout::darcy_velocity: q of every node [m/s]. */
-      std::vector<double> darcy_velocities;
+      /**
+       * With Layout::darcy_velocity: q of every node [m/s], its components
+       * along the fluid domain's axes (the second 0 in 2D).
+       */
+      std::vector<std::array<double, 2>> darcy_velocities;
     };
 
     /**

@@ -2,6 +2,7 @@
 #ifndef rsfcycle_physics_scene_h
 #define rsfcycle_physics_scene_h
 
+#include <array>
 #include <cmath>
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
@@ -193,10 +194,11 @@ namespace rsfcycle
 
       /**
        * The pore fluid's Darcy velocity [m/s] along the contact at a point
-       * (rotated frame) and time [s], only reported. An empty function (the
-       * default): none.
+       * (rotated frame) and time [s], only reported: one component in 2D,
+       * two in 3D (along the fluid domain's axes; the second 0 in 2D). An
+       * empty function (the default): none.
        */
-      virtual std::function<double(const Point<dim> &, double)>
+      virtual std::function<std::array<double, 2>(const Point<dim> &, double)>
       darcy_velocity() const
       {
         return {};

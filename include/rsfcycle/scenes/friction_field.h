@@ -2,6 +2,7 @@
 #ifndef rsfcycle_scenes_friction_field_h
 #define rsfcycle_scenes_friction_field_h
 
+#include <array>
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -52,7 +53,10 @@ namespace rsfcycle
         std::shared_ptr<const Function<dim>> radiation_damping;
         /** p(x, t) [Pa], time-dependent; null: none. */
         std::shared_ptr<Function<dim>> pore_pressure;
-        /** q(x, t) [m/s], time-dependent, reported only; null: none. */
+        /**
+         * q(x, t) [m/s], time-dependent, reported only, one component (2D)
+         * or one or two (3D, along the fluid domain's axes); null: none.
+         */
         std::shared_ptr<Function<dim>> darcy_velocity;
       };
 
@@ -121,8 +125,11 @@ namespace rsfcycle
       std::optional<double>
       pore_pressure(const Point<dim> &x, double t) const;
 
-      /** The Darcy velocity at x and time t [m/s]; none: not given. */
-      std::optional<double>
+      /**
+       * The Darcy velocity's components at x and time t [m/s] (the second
+       * 0 in 2D); none: not given.
+       */
+      std::optional<std::array<double, 2>>
       darcy_velocity(const Point<dim> &x, double t) const;
 
       /** The prescribed radiation damping at x; none: the material's. */
@@ -142,6 +149,11 @@ namespace rsfcycle
       check(const Point<dim> &x, const std::string &section) const;
 
     private:
+      static void
+      parse_pore_fluid(ParameterHandler  &prm,
+                       const std::string &section,
+                       Functions         &functions);
+
       Functions f;
     };
   } // namespace scenes

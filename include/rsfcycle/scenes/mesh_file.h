@@ -92,7 +92,7 @@ namespace rsfcycle
       }
       std::function<double(const Point<dim> &, double)>
       pore_pressure() const override;
-      std::function<double(const Point<dim> &, double)>
+      std::function<std::array<double, 2>(const Point<dim> &, double)>
       darcy_velocity() const override;
       double
       radiation_damping(const Point<dim> &p,

@@ -17,7 +17,7 @@ namespace rsfcycle
     /** The names of SeasParameters::Benchmark, in its order. */
     const char *const benchmark_names =
       "none|custom|BP1-QD|BP1-FD|BP2-QD|BP3-QD|BP3-FD|BP4-QD|BP5-QD|"
-      "BP6-QD-A|BP6-QD-S|BP7-QD";
+      "BP6-QD-A|BP6-QD-S|BP7-QD|BP8-QD-GS|BP8-QD-PW";
 
     SeasParameters::Benchmark
     parse_benchmark(const std::string &name)
@@ -46,7 +46,7 @@ namespace rsfcycle
       "(doc/seas.md lists them per benchmark): none (no SEAS files), "
       "custom (the files of Problem, for a model of your own), or one of "
       "BP1-QD, BP1-FD, BP2-QD, BP3-QD, BP3-FD, BP4-QD, BP5-QD, BP6-QD-A, "
-      "BP6-QD-S, BP7-QD. The stations and profiles are placed by the "
+      "BP6-QD-S, BP7-QD, BP8-QD-GS, BP8-QD-PW. The stations and profiles are placed by the "
       "entries below; python3 -m rsfcycle.seas check RUN checks a run "
       "folder against the benchmark's description");
     prm.declare_entry(
@@ -473,6 +473,18 @@ namespace rsfcycle
           c.catalog            = true;
           if (benchmark == Benchmark::bp7_qd)
             c.problem = "SEAS Benchmark BP7-QD-A";
+          break;
+        case Benchmark::bp8_qd_gs:
+        case Benchmark::bp8_qd_pw:
+          // BP8 (Table 1 and its output list, as EQquasi's BP8 submission
+          // check reads them): every file .dat, the profiles
+          // shear_stress_2_*, 4 lines, no off-fault stations, catalog or
+          // rupture times
+          c.profile_name_lines = 4;
+          c.stress_profile     = "shear_stress";
+          c.station_extension  = ".dat";
+          c.off_fault          = false;
+          c.rupture            = false;
           break;
         case Benchmark::bp6_qd_a:
         case Benchmark::bp6_qd_s:

@@ -40,6 +40,10 @@ namespace rsfcycle
     std::string stress_profile = "stress";
     /** Whether global.dat and catalog.dat are written. */
     bool global = true, catalog = false;
+    /** 3D: whether rupture.dat is written (not BP8). */
+    bool rupture = true;
+    /** The extension of the fault stations' files (BP8: .dat). */
+    std::string station_extension;
     /**
      * Whether the observation points write off-fault station files
      * (srfst_NAME in 2D: BP3; blkst_NAME in 3D: BP5, BP7).
@@ -66,7 +70,9 @@ namespace rsfcycle
       bp5_qd,
       bp6_qd_a,
       bp6_qd_s,
-      bp7_qd
+      bp7_qd,
+      bp8_qd_gs,
+      bp8_qd_pw
     };
     Benchmark benchmark = Benchmark::none;
     /** `# problem=` of a custom problem's headers. */

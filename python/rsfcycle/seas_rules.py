@@ -14,6 +14,8 @@ The descriptions (the SCEC SEAS benchmark problems):
 - D6: "SEAS Benchmark Problems BP6-QD-A/S/C", Lambert & Dunham (2021).
 - D7: "SEAS Benchmark Problems BP7-QD/FD-A/S", Lambert, Jiang & Erickson
   (2021).
+- D8: "SEAS Benchmark Problems BP8-QD-GS/PW" (Table 1 and the output
+  list), as EQquasi's BP8 submission check (checkBP8Submission) reads it.
 
 For BP1-FD, BP2-QD and BP4-QD no description could be read: their rules
 follow BP1's or BP5's, and the peers' files (QDYN's BP2 stations, HBI's BP4
@@ -135,11 +137,12 @@ CATALOG_FIELDS = [["event_no", "t_start", "t_end", "rup_area",
                    "avg_stress_start", "avg_stress_end", "avg_slip"]]
 
 
-def _profiles_3d(prefix, strike, depth, source, optional=False):
+def _profiles_3d(prefix, strike, depth, source, optional=False, extra=()):
     rules = []
     for line, name, positions in (("strike", "x2", strike),
                                   ("depth", "x3", depth)):
-        for quantity in ("slip_2", "slip_3", prefix + "_2", prefix + "_3"):
+        for quantity in ("slip_2", "slip_3", prefix + "_2", prefix + "_3",
+                         *extra):
             rules.append(FileRule(
                 [quantity + "_" + line + ".dat"], PROFILE_KEYS,
                 [[name], ["t"], ["max_slip_rate"], [quantity]], source,
@@ -167,6 +170,30 @@ BP7_STATIONS = _stations("fltst_strk", [
 BP7_BLOCKS = _stations("blkst_strk", [
     "+000fn+200dp+000", "+000fn+400dp+000", "-300fn+400dp+000",
     "+000fn+400dp+300", "+300fn+400dp+000", "+000fn+400dp-300"])
+
+
+BP8_STATIONS = [f"fltst_strk{x2:+04d}dp{x3:+04d}.dat"
+                for x2 in (-200, 0, 200) for x3 in (-200, 0, 200)]
+
+
+def _bp8(name):
+    return Benchmark(
+        name, "SEAS Benchmark " + name,
+        "D8 (BP8-QD-GS/PW), its output list",
+        [FileRule(BP8_STATIONS, SERIES_KEYS + STEP_KEYS,
+                  [PLANE_FIELDS[0][:-1] + ["pore_pressure", "darcy_vel_2",
+                                           "darcy_vel_3", "state"]],
+                  "D8: 9 stations fltst_strk+XXXdp+YYY.dat (m) at x2, x3 "
+                  "in {-200, 0, 200} m, 11 fields"),
+         FileRule(["global.dat"], SERIES_KEYS + STEP_KEYS,
+                  [["t", "max_slip_rate", "moment_rate"]],
+                  "D8: the moment rate over the frictional domain")]
+        + _profiles_3d("shear_stress", (-400.0, 400.0, 81),
+                       (-400.0, 400.0, 81),
+                       "D8: from -400 to 400 m at exactly 10 m",
+                       extra=("pore_pressure",)),
+        ["Every file ends in .dat (the platform ignores .txt); no "
+         "catalog, rupture times or off-fault stations."])
 
 
 def _bp6(name, problem):
@@ -258,6 +285,8 @@ BENCHMARKS = [
                   "D7 section 4.6", kind="table")]
         + _profiles_3d("stress", (-400.0, 400.0, 81), (-400.0, 400.0, 81),
                        "D7 section 4.5: from -400 to 400 m every 10 m")),
+    _bp8("BP8-QD-GS"),
+    _bp8("BP8-QD-PW"),
 ]
 
 
@@ -296,6 +325,10 @@ PEERS = {
                "3`); Thrase separates the fields by tabs; D7 gives D_RS = "
                "0.50/0.53 mm without saying which goes with which law "
                "(rsfcycle: 0.53 mm, as HBI)."],
+    "BP8-QD-GS": ["EQquasi also writes two off-fault points, (0, 200, 0) "
+                  "and (0, 400, 0) m, which the output list does not "
+                  "name; rsfcycle writes none."],
+    "BP8-QD-PW": ["As BP8-QD-GS."],
 }
 for _benchmark in BENCHMARKS:
     _benchmark.peers = PEERS.get(_benchmark.name, [])

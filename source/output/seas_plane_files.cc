@@ -95,6 +95,8 @@ namespace rsfcycle
       : SeasFileSet(parameters)
       , weights(layout.weights)
       , axes(layout.slip_axes)
+      , pore_pressure(layout.pore_pressure)
+      , darcy_velocity(layout.darcy_velocity)
     {
       const std::string entry = "Output/SEAS/";
       const unsigned    n     = layout.points.size();
@@ -187,7 +189,10 @@ namespace rsfcycle
         {
           const auto &x = parameters.plane_stations[i];
           stations.push_back(locate(x[0], x[1], "Plane stations"));
-          add_file(dir, parameters.plane_station_file(i), true);
+          add_file(dir,
+                   parameters.plane_station_file(i) +
+                     conventions.station_extension,
+                   true);
         }
       if (conventions.off_fault && !layout.station_names.empty() &&
           layout.observation_components != 3)
@@ -203,7 +208,8 @@ namespace rsfcycle
           }
       if (conventions.global)
         global = add_file(dir, "global.dat", true);
-      rupture = add_file(dir, "rupture.dat", false);
+      if (conventions.rupture)
+        rupture = add_file(dir, "rupture.dat", false);
       if (conventions.catalog)
         catalog = add_file(dir, "catalog.dat", false);
 
@@ -226,11 +232,8 @@ namespace rsfcycle
       line(parameters.depth_profile, false, depth_x3, depth_line);
       first_profile = file_paths.size();
       for (const std::string suffix : {"strike", "depth"})
-        for (const std::string &field : {std::string("slip_2"),
-                                         std::string("slip_3"),
-                                         conventions.stress_profile + "_2",
-                                         conventions.stress_profile + "_3"})
-          add_file(dir, field + "_" + suffix + ".dat", true);
+        for (const auto &field : profile_fields())
+          add_file(dir, field.first + "_" + suffix + ".dat", true);
 
       std::vector<double> area(weights);
       events = SeasEvents(parameters.rupture_threshold, 10., area);
@@ -306,20 +309,29 @@ namespace rsfcycle
     void
     SeasPlaneFiles::write_headers()
     {
-      const auto &p = parameters;
+      const auto         &p       = parameters;
+      std::vector<Column> columns = {{"t", "Time (s)"},
+                                     {"slip_2", "Slip_2 (m)"},
+                                     {"slip_3", "Slip_3 (m)"},
+                                     {"slip_rate_2", "Slip_rate_2 (log10 m/s)"},
+                                     {"slip_rate_3", "Slip_rate_3 (log10 m/s)"},
+                                     {"shear_stress_2", "Shear_stress_2 (MPa)"},
+                                     {"shear_stress_3",
+                                      "Shear_stress_3 (MPa)"}};
+      if (pore_pressure)
+        columns.emplace_back("pore_pressure", "Pore_pressure (MPa)");
+      if (darcy_velocity)
+        {
+          columns.emplace_back("darcy_vel_2", "Darcy_velocity_2 (m/s)");
+          columns.emplace_back("darcy_vel_3", "Darcy_velocity_3 (m/s)");
+        }
+      columns.emplace_back("state", "State (log10 s)");
       for (unsigned int i = 0; i < stations.size(); ++i)
         write_series_header(i,
                             "on fault, " + km(p.plane_stations[i][0]) +
                               "km along strike, " + km(p.plane_stations[i][1]) +
                               "km depth",
-                            {{"t", "Time (s)"},
-                             {"slip_2", "Slip_2 (m)"},
-                             {"slip_3", "Slip_3 (m)"},
-                             {"slip_rate_2", "Slip_rate_2 (log10 m/s)"},
-                             {"slip_rate_3", "Slip_rate_3 (log10 m/s)"},
-                             {"shear_stress_2", "Shear_stress_2 (MPa)"},
-                             {"shear_stress_3", "Shear_stress_3 (MPa)"},
-                             {"state", "State (log10 s)"}});
+                            columns);
       for (unsigned int i = 0; i < block_names.size(); ++i)
         write_series_header(first_block + i,
                             "off fault, observation point " + block_names[i] +
@@ -334,10 +346,9 @@ namespace rsfcycle
                              {"vel_3", "Velocity_3 (m/s)"}});
       if (conventions.global)
         {
-          std::vector<Column> columns = {
-            {"t", "Time (s)"},
-            {"max_slip_rate", "Max slip rate (log10 m/s)"},
-            {"moment_rate", "Moment rate (N-m/s)"}};
+          columns = {{"t", "Time (s)"},
+                     {"max_slip_rate", "Max slip rate (log10 m/s)"},
+                     {"moment_rate", "Moment rate (N-m/s)"}};
           if (!in_vw.empty())
             columns.emplace_back("moment_rate_vw",
                                  "Moment rate of VW patch (N-m/s)");
@@ -347,13 +358,14 @@ namespace rsfcycle
                                 "the region " + p.moment_region,
                               columns);
         }
-      write_table_header(rupture,
-                         {{"x2", "x2 (m)"},
-                          {"x3", "x3 (m)"},
-                          {"t",
-                           "time (s) the slip rate first reaches " +
-                             format_number(p.rupture_threshold) +
-                             " m/s in the first event; 1e9: never"}});
+      if (conventions.rupture)
+        write_table_header(rupture,
+                           {{"x2", "x2 (m)"},
+                            {"x3", "x3 (m)"},
+                            {"t",
+                             "time (s) the slip rate first reaches " +
+                               format_number(p.rupture_threshold) +
+                               " m/s in the first event; 1e9: never"}});
       if (conventions.catalog)
         write_table_header(catalog,
                            {{"event_no", "Event number"},
@@ -366,13 +378,7 @@ namespace rsfcycle
                             {"avg_slip", "Avg slip in rupture area (m)"}});
       unsigned int f = first_profile;
       for (const bool strike : {true, false})
-        for (const auto &[field, text] :
-             {std::make_pair(std::string("slip_2"), "Slip_2 (m)"),
-              std::make_pair(std::string("slip_3"), "Slip_3 (m)"),
-              std::make_pair(conventions.stress_profile + "_2",
-                             "Shear_stress_2 (MPa)"),
-              std::make_pair(conventions.stress_profile + "_3",
-                             "Shear_stress_3 (MPa)")})
+        for (const auto &[field, text] : profile_fields())
           write_profile_header(f++,
                                strike ? "Strike (m)" : "Depth (m)",
                                strike ? "x2" : "x3",
@@ -392,7 +398,10 @@ namespace rsfcycle
                       &log10_rate,
                       &stress_2,
                       &stress_3,
-                      &log10_state})
+                      &log10_state,
+                      &pressure,
+                      &darcy_2,
+                      &darcy_3})
         v->resize(m);
       double max_rate = 0;
       for (unsigned int k = 0; k < n; ++k)
@@ -420,6 +429,9 @@ namespace rsfcycle
           stress_2[k]      = V > 0 ? tau * v[0] / V : 0.;
           stress_3[k]      = V > 0 ? tau * v[1] / V : 0.;
           log10_state[k]   = sample.log10_states[k];
+          pressure[k] = pore_pressure ? sample.pore_pressures[k] / 1e6 : 0.;
+          darcy_2[k]  = darcy_velocity ? sample.darcy_velocities[k][0] : 0.;
+          darcy_3[k]  = darcy_velocity ? sample.darcy_velocities[k][1] : 0.;
           if (in_moment[k])
             max_rate = std::max(max_rate, V);
         }
@@ -436,6 +448,9 @@ namespace rsfcycle
           stress_2[k]                     = stress_2[j];
           stress_3[k]                     = stress_3[j];
           log10_state[k]                  = log10_state[j];
+          pressure[k]                     = pressure[j];
+          darcy_2[k]                      = darcy_2[j];
+          darcy_3[k]                      = darcy_3[j];
         }
       log10_max_rate = log10_of(max_rate);
     }
@@ -463,7 +478,7 @@ namespace rsfcycle
       if (rupture_written)
         return;
       rupture_written = true;
-      if (!writing)
+      if (!writing || !conventions.rupture)
         return;
       const auto &times = events.rupture_times();
       for (unsigned int k = 0; k < times.size(); ++k)
@@ -500,8 +515,12 @@ namespace rsfcycle
           const auto &w = stations[i];
           row.precise(t) << at(w, slip_2) << at(w, slip_3)
                          << at(w, log10_rate_2) << at(w, log10_rate_3)
-                         << at(w, stress_2) << at(w, stress_3)
-                         << at(w, log10_state);
+                         << at(w, stress_2) << at(w, stress_3);
+          if (pore_pressure)
+            row << at(w, pressure);
+          if (darcy_velocity)
+            row << at(w, darcy_2) << at(w, darcy_3);
+          row << at(w, log10_state);
           write_row(i, t);
         }
       const double factor = parameters.mirror ? 0.5 : 1.;
@@ -533,13 +552,15 @@ namespace rsfcycle
         {
           unsigned int f = first_profile;
           for (const auto *line : {&strike_line, &depth_line})
-            for (const auto *field : {&slip_2, &slip_3, &stress_2, &stress_3})
-              {
-                row.precise(t) << log10_max_rate;
-                for (const auto &w : *line)
-                  row << at(w, *field);
-                write_row(f++, t);
-              }
+            for (const auto *field :
+                 {&slip_2, &slip_3, &stress_2, &stress_3, &pressure})
+              if (field != &pressure || pore_pressure)
+                {
+                  row.precise(t) << log10_max_rate;
+                  for (const auto &w : *line)
+                    row << at(w, *field);
+                  write_row(f++, t);
+                }
         }
       check();
     }

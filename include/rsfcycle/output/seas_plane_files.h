@@ -9,6 +9,7 @@
 #include <rsfcycle/output/seas_file_set.h>
 #include <rsfcycle/seas_parameters.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rsfcycle
@@ -41,13 +42,18 @@ namespace rsfcycle
      *    that event is over (or the run ends);
      *  - catalog.dat (BP5, BP7): a row per event of the description's
      *    definition (output::SeasEvents);
-     *  - slip_2, slip_3, stress_2, stress_3 (BP8's shear_stress_2, ...) along
+     *  - with a pore fluid (SEAS BP8), the station columns pore_pressure
+     *    (MPa) and, with its Darcy velocity, darcy_vel_2 darcy_vel_3 (m/s,
+     *    along the fluid domain's axes) before state;
+     *  - slip_2, slip_3, stress_2, stress_3 (BP8's shear_stress_2, ...;
+     *    with a pore fluid also pore_pressure) along
      *    the `Strike profile` line (FIELD_strike.dat) and the `Depth
      *    profile` line (FIELD_depth.dat): a row 0 0 and the positions, then
      *    t, max_slip_rate and the values, every `Slip profile interval`,
      *    during events every `Event slip profile interval`. With `Boundary
      *    slip rate`, the creep nodes one cell beyond the contact are
-     *    positions too.
+     *    positions too (their pore pressure that of the contact node next
+     *    to them). BP8's files end in .dat, and it has no rupture.dat.
      * The shear stress is the friction stress along the slip rate (the
      * rake is free). With `Mirror model` the off-fault stations report the
      * benchmark's side y > 0: half of the model's displacement and rate.
@@ -135,8 +141,25 @@ namespace rsfcycle
                    first_profile = 0;
 
       // the sample's node values
+      /** The profiles' fields: file name stem, header text. */
+      std::vector<std::pair<std::string, std::string>>
+      profile_fields() const
+      {
+        const std::string stress = conventions.stress_profile;
+        std::vector<std::pair<std::string, std::string>> fields = {
+          {"slip_2", "Slip_2 (m)"},
+          {"slip_3", "Slip_3 (m)"},
+          {stress + "_2", "Shear_stress_2 (MPa)"},
+          {stress + "_3", "Shear_stress_3 (MPa)"}};
+        if (pore_pressure)
+          fields.emplace_back("pore_pressure", "Pore_pressure (MPa)");
+        return fields;
+      }
+
       std::vector<double> slip_2, slip_3, log10_rate_2, log10_rate_3,
-        log10_rate, stress_2, stress_3, log10_state;
+        log10_rate, stress_2, stress_3, log10_state, pressure, darcy_2, darcy_3;
+      /** Whether the samples carry a pore pressure, a Darcy velocity. */
+      bool   pore_pressure = false, darcy_velocity = false;
       double log10_max_rate = 0;
 
       SeasEvents events;

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <algorithm>
 #include <cmath>
 #include <rsfcycle/format.h>
 #include <rsfcycle/models/implicit_step.h>
@@ -194,7 +195,9 @@ namespace rsfcycle
       const auto coupled = time::couple_rate_and_state(
         solver.coupling,
         solver.fixed_point_tolerance,
-        solver.max_fixed_point_iterations,
+        fixed_point_cap > 0 ?
+          std::min(fixed_point_cap, solver.max_fixed_point_iterations) :
+          solver.max_fixed_point_iterations,
         scheme.state_weight(),
         old.v,
         next.v,

@@ -70,6 +70,16 @@ namespace rsfcycle
       solvers::StepStatistics
       take_work();
 
+      /**
+       * At most n iterations of the rate-state fixed point in the steps
+       * that follow (0: Solver/Max fixed-point iterations).
+       */
+      void
+      limit_fixed_point_iterations(const unsigned int n)
+      {
+        fixed_point_cap = n;
+      }
+
       /** Time the state updates in the TimerOutput section "State update". */
       void
       set_timer(dealii::TimerOutput *new_timer)
@@ -172,6 +182,8 @@ namespace rsfcycle
       solvers::TNNMG                                   &tnnmg;
       const friction::Law                              &law;
       std::function<double(const dealii::Point<dim> &)> along_base;
+      /** limit_fixed_point_iterations()'s n (0: none). */
+      unsigned int fixed_point_cap = 0;
 
       solvers::StepStatistics work;
       std::string             failure;

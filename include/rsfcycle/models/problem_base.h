@@ -191,6 +191,11 @@ namespace rsfcycle
     explicit_step(const BodyState &old, double t, double tau) override;
     std::string
     explicit_refusal() const override;
+    void
+    limit_fixed_point_iterations(const unsigned int n) override
+    {
+      implicit_step->limit_fixed_point_iterations(n);
+    }
     /** @} */
 
   private:

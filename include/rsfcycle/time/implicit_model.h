@@ -45,6 +45,17 @@ namespace rsfcycle
       /** The power of tau with which the local error grows. */
       virtual double
       error_order() const = 0;
+
+      /**
+       * At most n iterations of the rate-state fixed point in the steps
+       * that follow (0: the solver's own limit); a model without the fixed
+       * point ignores it.
+       */
+      virtual void
+      limit_fixed_point_iterations(const unsigned int n)
+      {
+        (void)n;
+      }
     };
   } // namespace time
 } // namespace rsfcycle

@@ -28,8 +28,10 @@ namespace rsfcycle
      * for. Both take the same state, so a change costs nothing.
      *
      * The way back is a trial: after 256 explicit steps the run takes up to
-     * 32 implicit steps under the control, started at 2 R tau_e. Every one
-     * of them is accepted by the error estimate, as in an implicit run; the
+     * 32 implicit steps under the control, started at 2 R tau_e, each with
+     * at most 4 iterations of the rate-state fixed point (a step that needs
+     * more is refused: it would not pay). Every one of them is accepted by
+     * the error estimate, as in an implicit run; the
      * trial succeeds as soon as the controlled step reaches 2 R tau_e (the
      * hysteresis), and the run stays implicit. If the controlled step falls
      * below R tau_e, or after the 32 steps, the run returns to explicit
@@ -162,6 +164,8 @@ namespace rsfcycle
         countdown     = static_cast<unsigned int>(memory.values[1]);
         interval      = static_cast<unsigned int>(memory.values[2]);
         trial         = static_cast<unsigned int>(memory.values[3]);
+        implicit_model.limit_fixed_point_iterations(
+          trial > 0 ? trial_iterations : 0);
         if (!explicit_mode)
           {
             IntegratorMemory<State> inner = memory;
@@ -195,8 +199,9 @@ namespace rsfcycle
       void
       start_trial()
       {
-        explicit_mode                  = false;
-        trial                          = trial_steps;
+        explicit_mode = false;
+        trial         = trial_steps;
+        implicit_model.limit_fixed_point_iterations(trial_iterations);
         TimeSteppingParameters restart = ts;
         restart.initial_step           = 2 * ratio * explicit_step;
         implicit = make_step_size_control(restart, implicit_model);
@@ -215,7 +220,8 @@ namespace rsfcycle
         if (implicit->step_size() >= 2 * ratio * explicit_step)
           {
             trial = 0;
-            note  = "implicit steps from t = " + format_number(t) +
+            implicit_model.limit_fixed_point_iterations(0);
+            note = "implicit steps from t = " + format_number(t) +
                    " s (their error estimate allows " +
                    format_number(implicit->step_size()) + " s)";
             return;
@@ -226,8 +232,9 @@ namespace rsfcycle
           return;
         trial         = 0;
         explicit_mode = true;
-        interval      = std::min(2 * interval, last_interval);
-        countdown     = interval;
+        implicit_model.limit_fixed_point_iterations(0);
+        interval  = std::min(2 * interval, last_interval);
+        countdown = interval;
       }
 
       /** R: the explicit steps an implicit step must stand for. */
@@ -236,6 +243,12 @@ namespace rsfcycle
       static constexpr unsigned int last_interval  = 4096;
       /** The implicit steps of a trial at most. */
       static constexpr unsigned int trial_steps = 32;
+      /**
+       * The fixed-point iterations of a trial's step at most: a step whose
+       * rate and state need more does not pay (in 3D, the 20 iterations of
+       * a refused step cost thousands of explicit steps).
+       */
+      static constexpr unsigned int trial_iterations = 4;
       /** The values of memory() before the implicit control's. */
       static constexpr unsigned int n_values = 4;
 

@@ -72,6 +72,10 @@ namespace
          "  seas-bp6-qd-a.prm     SEAS BP6-QD-A (fluid injection, ageing law)\n"
          "  seas-bp6-qd-s.prm     SEAS BP6-QD-S (the same, slip law)\n"
          "  seas-bp7-qd.prm       SEAS BP7-QD (3D, a 200 m disc, nucleation)\n"
+         "  seas-bp8-qd-gs.prm    SEAS BP8-QD-GS (3D, injection, the pore "
+         "pressure diffusing from a Gaussian source)\n"
+         "  seas-bp8-qd-pw.prm    SEAS BP8-QD-PW (the same from a Peaceman "
+         "well)\n"
          "  spring-slider.prm     a spring-slider in stick-slip\n"
          "  spring-slider-stable.prm  a stable spring-slider\n";
   }

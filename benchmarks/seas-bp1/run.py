@@ -53,6 +53,9 @@ FD_MERGE = 3600.0  # [s]: BP1-FD's Output/Event merge time
 NO_VTU = {"Output/Writers": "time series, base profile, events, seas"}
 FD3 = dict(NO_VTU, **{"Stop after events": 3})
 FD1 = dict(NO_VTU, **{"Stop after events": 1})
+# explicit steps inside the events, implicit ones between them
+IE = {"Time stepping/Integrator": "implicit-explicit",
+      "Solver/Mass matrix": "lumped"}
 
 
 def mesh(name):
@@ -103,6 +106,12 @@ RUNS = {
         "Solver/Spectral radius": 0}), "the same, rho_inf = 0", ""),
     "bp1-fd-wp-25m": ("seas-bp1-fd.prm", dict(FD1, **{
         "Mesh/Local refinements": 6}), "the same at 25 m", ""),
+    "bp1-fd-ie": ("seas-bp1-fd.prm", dict(FD1, **IE),
+                  "BP1-FD's first event, implicit-explicit (lumped mass, "
+                  "Courant number 0.5)", "bp1-fd-ie.cost"),
+    "bp1-fd-ie-c025": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
+        "Time stepping/Courant number": 0.25}),
+        "the same, Courant number 0.25", ""),
     "bp2-qd": ("seas-bp2-qd.prm", {}, "BP2-QD as shipped: 12.5 m, 800 km "
                "body, 1200 yr", "bp2-qd.cost"),
     "bp2-qd-25m": ("seas-bp2-qd.prm", {
@@ -524,8 +533,43 @@ PYTHONPATH=python python3 -m rsfcycle.results write benchmarks/seas-bp1"""
                    f"{key.replace('_', ' ')}", "bp1-qd-800km",
                    found[1].folder)
     results_fd(work, record)
+    results_fd_ie(work, record)
     results_bp2(work, record)
     return 0
+
+
+def results_fd_ie(work, record):
+    """BP1-FD's first event with explicit steps inside it: its figures
+    (SCycle's are in the rows bp1-fd.*) and its cost against the implicit
+    step's (bp1-fd-wp-1e-5, the same first event)."""
+    for name, label in (("bp1-fd-ie", "Courant number 0.5"),
+                        ("bp1-fd-ie-c025", "Courant number 0.25")):
+        found = load(work, [(name, label)], name)
+        if not found:
+            continue
+        first = first_event(found[0])
+        key = name.replace("bp1-fd-", "bp1-fd.")
+        for field, text, unit, scale, digits in (
+                ("start", "start", "yr", YEAR, 3),
+                ("peak", "peak slip rate", "m/s", 1, 2),
+                ("jump", "surface slip", "m", 1, 4)):
+            record(f"{key}.{field}",
+                   f"{getattr(first, field) / scale:.{digits}f}", unit,
+                   f"implicit-explicit, {label}: first event's {text}",
+                   name, found[0].folder)
+        mine = context_of(work, name, found[0].folder)
+        if "cpu_s" in mine:
+            cpu = int(round(mine["cpu_s"]))
+            record(f"{key}.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
+                   f"implicit-explicit, {label}: CPU time of one core to "
+                   "the first event's end", name, found[0].folder)
+            implicit = context_of(work, "bp1-fd-wp-1e-5")
+            if "cpu_s" in implicit:
+                record(f"{key}.cost_ratio",
+                       f"{mine['cpu_s'] / implicit['cpu_s']:.2f}", "x",
+                       f"implicit-explicit, {label}: CPU time over the "
+                       "implicit step's (bp1-fd-wp-1e-5) to the first "
+                       "event's end", name, found[0].folder)
 
 
 def first_event(s):

@@ -119,21 +119,26 @@ namespace rsfcycle
             else if (paired(i) && C.column(j) == partner[i])
               damping_coupling[i] = C.value(j);
         }
-      if (!tie.empty())
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            mass_diagonal.local_element(i)    = mass[i];
-            damping_diagonal.local_element(i) = damping[i];
-          }
-      if (!tie.empty())
-        {
-          mass_diagonal.update_ghost_values();
-          damping_diagonal.update_ghost_values();
-        }
       on_contact.assign(n, false);
       for (const auto &node : contact.contact_set().nodes)
         for (unsigned int l = 0; l < node.n_dofs; ++l)
           on_contact[node.dofs[l]] = true;
+      if (!tie.empty())
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              mass_diagonal.local_element(i)    = mass[i];
+              damping_diagonal.local_element(i) = damping[i];
+              // the pairs' free dofs off the contact, by kind
+              const auto kind =
+                tie.kind[discretisation.partitioner->local_to_global(i)];
+              if (paired(i) && !discretisation.fixed[i] && !on_contact[i])
+                (kind == physics::tie_slip ? free_slips : free_means)
+                  .push_back(i);
+            }
+          mass_diagonal.update_ghost_values();
+          damping_diagonal.update_ghost_values();
+        }
       find_blocks();
       discretisation.reinit(damping_force);
       const auto [lambda, h] = largest_cell_eigenvalue(discretisation);
@@ -342,7 +347,9 @@ namespace rsfcycle
         else
           {
             largest = std::max(largest, dofs.size());
-            Block block{dofs, dealii::FullMatrix<double>(dofs.size())};
+            Block block;
+            block.dofs = dofs;
+            block.damping.reinit(dofs.size(), dofs.size());
             for (unsigned int k = 0; k < dofs.size(); ++k)
               for (unsigned int j = C.row_begin(dofs[k]);
                    j < C.row_end(dofs[k]);
@@ -365,23 +372,27 @@ namespace rsfcycle
     void
     ExplicitStep<dim>::solve_blocks(const la::Vector &r,
                                     const double      tau,
-                                    la::Vector       &v) const
+                                    la::Vector       &v)
     {
-      for (const auto &block : blocks)
+      // (2/tau M_L + C)^-1 of every block, inverted again only when the
+      // step changes (the last step before End time, or a new Courant
+      // step)
+      if (tau != blocks_tau)
         {
-          const unsigned int         m = block.dofs.size();
-          dealii::FullMatrix<double> A(block.damping);
-          dealii::Vector<double>     rhs(m), x(m);
-          for (unsigned int k = 0; k < m; ++k)
+          for (auto &block : blocks)
             {
-              A(k, k) += 2 * mass[block.dofs[k]] / tau;
-              rhs(k) = r.local_element(block.dofs[k]);
+              block.inverse = block.damping;
+              for (unsigned int k = 0; k < block.dofs.size(); ++k)
+                block.inverse(k, k) += 2 * mass[block.dofs[k]] / tau;
+              block.inverse.gauss_jordan();
             }
-          A.gauss_jordan();
-          A.vmult(x, rhs);
-          for (unsigned int k = 0; k < m; ++k)
-            v.local_element(block.dofs[k]) += x(k);
+          blocks_tau = tau;
         }
+      for (const auto &block : blocks)
+        for (unsigned int k = 0; k < block.dofs.size(); ++k)
+          for (unsigned int l = 0; l < block.dofs.size(); ++l)
+            v.local_element(block.dofs[k]) +=
+              block.inverse(k, l) * r.local_element(block.dofs[l]);
     }
 
 
@@ -421,27 +432,19 @@ namespace rsfcycle
     {
       // a free slip off the contact (none in the shipped meshes) first,
       // then every free mean from its slip (ghosts exchanged between)
-      const auto &tie          = discretisation.fault_tie;
-      const auto  free_of_kind = [&](const unsigned int i, const auto kind) {
-        return partner[i] != dealii::numbers::invalid_unsigned_int &&
-               !discretisation.fixed[i] && !on_contact[i] &&
-               tie.kind[discretisation.partitioner->local_to_global(i)] == kind;
-      };
-      for (unsigned int i = 0; i < partner.size(); ++i)
-        if (free_of_kind(i, physics::tie_slip))
-          {
-            const auto [a_pair, rho_pair] = condensed(i, tau);
-            v.local_element(i) = (rho_pairs.local_element(i) - rho_pair) /
-                                 (2 * mass[i] / tau + damping[i] - a_pair);
-          }
+      for (const unsigned int i : free_slips)
+        {
+          const auto [a_pair, rho_pair] = condensed(i, tau);
+          v.local_element(i) = (rho_pairs.local_element(i) - rho_pair) /
+                               (2 * mass[i] / tau + damping[i] - a_pair);
+        }
       v.update_ghost_values();
-      for (unsigned int i = 0; i < partner.size(); ++i)
-        if (free_of_kind(i, physics::tie_mean))
-          v.local_element(i) =
-            (rho_pairs.local_element(i) -
-             (2 * mass_coupling[i] / tau + damping_coupling[i]) *
-               v.local_element(partner[i])) /
-            (2 * mass[i] / tau + damping[i]);
+      for (const unsigned int i : free_means)
+        v.local_element(i) =
+          (rho_pairs.local_element(i) -
+           (2 * mass_coupling[i] / tau + damping_coupling[i]) *
+             v.local_element(partner[i])) /
+          (2 * mass[i] / tau + damping[i]);
     }
 
 

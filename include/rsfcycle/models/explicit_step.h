@@ -142,7 +142,7 @@ namespace rsfcycle
 
       /** v += (2/tau M_L + C)^-1 r on every block. */
       void
-      solve_blocks(const la::Vector &r, double tau, la::Vector &v) const;
+      solve_blocks(const la::Vector &r, double tau, la::Vector &v);
 
       /**
        * rho = r + A v* of a split fault's paired dofs (A = 2/tau M + C with
@@ -189,8 +189,13 @@ namespace rsfcycle
       {
         std::vector<unsigned int>  dofs;
         dealii::FullMatrix<double> damping;
+        /** (2/tau M_L + C)^-1 on the block for tau = blocks_tau. */
+        dealii::FullMatrix<double> inverse;
       };
       std::vector<Block> blocks;
+      double             blocks_tau = 0;
+      /** A split fault's free slips and means off the contact. */
+      std::vector<unsigned int> free_slips, free_means;
       /** Per owned dof: free, off the contact and the pairs, in no block. */
       std::vector<bool> single;
       /** C v* of a step. */

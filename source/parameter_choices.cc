@@ -22,6 +22,10 @@ namespace rsfcycle
                                                          "implicit-explicit"};
   template <>
   const std::vector<std::string>
+    Choice<TimeSteppingParameters::ExplicitScheme>::names =
+      {"noh-bathe", "central-differences"};
+  template <>
+  const std::vector<std::string>
     Choice<TimeSteppingParameters::ErrorNorm>::names = {"L2", "max"};
   template <>
   const std::vector<std::string> Choice<SolverParameters::Coupling>::names =
@@ -75,6 +79,7 @@ namespace rsfcycle
   template struct Choice<MeshParameters::RefinementLaw>;
   template struct Choice<TimeSteppingParameters::Controller>;
   template struct Choice<TimeSteppingParameters::Integrator>;
+  template struct Choice<TimeSteppingParameters::ExplicitScheme>;
   template struct Choice<TimeSteppingParameters::ErrorNorm>;
   template struct Choice<SolverParameters::Coupling>;
   template struct Choice<SolverParameters::Dynamics>;

@@ -5,28 +5,36 @@
 // on the top, the base a contact without normal force: free), refined
 // three times globally: square cells of h = 1/32 m, rho = 1000 kg/m^3,
 // G = 0.6 MPa, c_s = sqrt(G / rho) = 24.4949 m/s.
-//  - The stable step. With the lumped mass the largest eigenvalue of a
-//    square Q1 cell's K_e x = lambda M_L,e x is 4 c^2 / h^2, so the bound
-//    is 2 / omega_max = h / c_s = 1.27578e-3 s; printed as the ratio of
-//    the computed stable step to it (1).
+//  - The stable step of both schemes. With the lumped mass the largest
+//    eigenvalue of a square Q1 cell's K_e x = lambda M_L,e x is 4 c^2 /
+//    h^2, so omega_max = 2 c / h and the bound Omega / omega_max is h /
+//    c_s = 1.27578e-3 s for central differences (Omega = 2) and 1.872515
+//    h / c_s for Noh and Bathe's p = 0.54 (Omega = 3.745029, where the
+//    spectral radius of its amplification matrix reaches 1); printed as
+//    the ratio of the computed stable step to it (1).
 //  - A plane shear wave, the standing mode u = cos(k x), k = pi/2 m^-1,
 //    uniform in y (free at x = 0, zero at x = 1). It is an exact
 //    eigenvector of the lumped system with lambda_h = 4 c^2 sin^2(k h/2)
-//    / h^2, so central differences give u(t_n) = cos(n theta) cos(k x)
-//    with cos theta = 1 - tau^2 lambda_h / 2, to rounding: checked after
-//    36 steps of 0.9 h / c_s (a quarter period, where u changes fastest),
-//    printed "yes" when every dof agrees to 1e-10. The continuum's
-//    cos(c k t) differs from it by the discretisation's dispersion, the
+//    / h^2, so a step maps the mode's (u, v, a) as the scheme maps those
+//    of the oscillator u'' = -lambda_h u (central differences: u(t_n) =
+//    cos(n theta) cos(k x) with cos theta = 1 - tau^2 lambda_h / 2, which
+//    the test checks too), to rounding: checked after 36 steps of 0.9 h /
+//    c_s (a quarter period, where u changes fastest), printed "yes" when
+//    every dof agrees to 1e-10. The continuum's cos(c k t) differs from it
+//    by the discretisation's dispersion: with central differences the
 //    space's -(k h)^2/24 and the time's +(c k tau)^2/24 in the frequency
-//    (-1.0e-4 and +8.1e-5): their difference at x = 0 is printed (about
-//    1.6 x 2e-5 = 3e-5).
+//    (-1.0e-4 and +8.1e-5), their difference at x = 0 printed (about 1.6 x
+//    2e-5 = 3e-5); Noh and Bathe's time error is far smaller (+1.2e-5 in
+//    the frequency at omega tau = 0.044), so the space's error dominates:
+//    about 1.6 x 8.8e-5 = 1.4e-4.
 //  - Stability as predicted: the mode of the largest eigenvalue here is
 //    uniform in x but for the held end (lambda_max = (4 - 4/3 sin^2(pi /
 //    128)) c^2/h^2, 0.9998 of the bound). From a rough start (values
 //    between -0.5 and 0.5 at every free dof), 2000 steps of 0.99 of the
 //    stable step stay bounded (max |u| below 20 times its start: yes);
-//    100 steps of 1.01 of it grow beyond 1e6 times the start (the growth
-//    factor of that mode is 1.33 per step): yes.
+//    200 steps of 1.01 of it grow beyond 1e6 times the start (the growth
+//    factor of that mode is 1.33 per step for central differences, 1.32 for
+//    Noh and Bathe): yes.
 #include "block_scene.h"
 #include "tests.h"
 
@@ -77,72 +85,110 @@ main(int argc, char **argv)
                 [&](const Point<2> &p) {
                   return scene.friction_parameters(p);
                 });
-  const auto              law = friction::make_law("ageing");
-  models::ExplicitStep<2> step(d, contact, *law, [](const Point<2> &p) {
-    return p[0];
-  });
-  const double            h = 1. / 32, c = std::sqrt(0.6e6 / 1000);
-  deallog << "stable step / (h / c_s): " << step.stable_step() / (h / c)
-          << "; refused: " << (step.refusal().empty() ? "no" : step.refusal())
-          << std::endl;
-
-  // the standing wave
-  BodyState state;
-  d.reinit(state.u);
-  d.reinit(state.v);
-  d.reinit(state.a);
-  VectorTools::interpolate(d.dof_handler, Mode(), state.u);
-  const double k        = numbers::PI / 2,
-               lambda_h = 4 * c * c * std::pow(std::sin(k * h / 2), 2) / h / h;
-  state.a               = state.u;
-  state.a *= -lambda_h;
-  state.alpha.assign(contact.n_nodes(), 0.);
-  const BodyState    start = state;
-  const double       tau   = 0.9 * h / c;
-  const unsigned int n     = 36;
-  double             t     = 0;
-  for (unsigned int i = 0; i < n; ++i, t += tau)
-    state = *step(state, t, tau);
-  const double theta  = std::acos(1 - tau * tau * lambda_h / 2);
-  la::Vector   expect = start.u;
-  expect *= std::cos(n * theta);
-  expect -= state.u;
-  unsigned int origin = 0;
-  for (const auto &cell : d.dof_handler.active_cell_iterators())
-    for (const unsigned int v : cell->vertex_indices())
-      if (cell->vertex(v).norm() < 1e-12)
-        origin = cell->vertex_dof_index(v, 0);
-  deallog << "standing wave after " << n << " steps of " << tau
-          << " s: the discrete closed form at every dof: "
-          << (max_abs(expect) < 1e-10 ? "yes" : "no")
-          << "; u(0, t) - cos(c k t) = " << std::setprecision(2)
-          << state.u(origin) - std::cos(c * k * t) << std::setprecision(6)
-          << std::endl;
-
-  // stability at and above the limit
-  for (const auto &[fraction, steps] :
-       {std::pair{0.99, 2000u}, std::pair{1.01, 100u}})
+  const auto   law = friction::make_law("ageing");
+  const double h = 1. / 32, c = std::sqrt(0.6e6 / 1000);
+  for (const bool two_stages : {false, true})
     {
-      BodyState rough = start;
-      rough.v         = 0;
-      rough.a         = 0;
-      for (unsigned int i = 0; i < rough.u.locally_owned_size(); ++i)
-        rough.u.local_element(i) =
-          d.fixed[i] ? 0. : ((i * 7919) % 101) / 101. - 0.5;
-      const double first = max_abs(rough.u);
-      double       most  = first;
-      const double dt    = fraction * step.stable_step();
-      for (unsigned int i = 0; i < steps; ++i)
-        {
-          rough = *step(rough, i * dt, dt);
-          most  = std::max(most, max_abs(rough.u));
-        }
-      deallog << fraction << " x the stable step, " << steps
-              << " steps: max |u| / start "
-              << (fraction < 1 ? "below 20: " : "above 1e6: ")
-              << ((fraction < 1 ? most < 20 * first : most > 1e6 * first) ?
-                    "yes" :
-                    "no")
+      const double omega_tau = two_stages ? 3.745029 : 2.;
+      deallog << (two_stages ? "noh-bathe" : "central-differences")
               << std::endl;
+      models::ExplicitStep<2> step(
+        d, contact, *law, [](const Point<2> &p) { return p[0]; }, two_stages);
+      deallog << "stable step / (Omega / 2 h / c_s): "
+              << step.stable_step() / (omega_tau / 2 * h / c) << "; refused: "
+              << (step.refusal().empty() ? "no" : step.refusal()) << std::endl;
+
+      // the standing wave
+      BodyState state;
+      d.reinit(state.u);
+      d.reinit(state.v);
+      d.reinit(state.a);
+      VectorTools::interpolate(d.dof_handler, Mode(), state.u);
+      const double k = numbers::PI / 2,
+                   lambda_h =
+                     4 * c * c * std::pow(std::sin(k * h / 2), 2) / h / h;
+      state.a = state.u;
+      state.a *= -lambda_h;
+      state.alpha.assign(contact.n_nodes(), 0.);
+      const BodyState    start = state;
+      const double       tau   = 0.9 * h / c;
+      const unsigned int n     = 36;
+      double             t     = 0;
+      // the scheme on the oscillator: a central-difference stage from
+      // (u, v, a) over dt with the base velocity w and the mass's
+      // coefficient kappa (models::ExplicitStep's class comment)
+      using Mode3 = std::array<double, 3>;
+      const auto stage =
+        [&](const Mode3 &m, double dt, double w, double kappa) {
+          const double u = m[0] + dt * m[1] + dt * dt / 2 * m[2];
+          const double v = (kappa * w - lambda_h * u) / kappa;
+          return Mode3{{u, v, kappa * (v - w)}};
+        };
+      Mode3 mode{{1., 0., -lambda_h}};
+      for (unsigned int i = 0; i < n; ++i, t += tau)
+        {
+          state = *step(state, t, tau);
+          if (!two_stages)
+            mode = stage(mode, tau, mode[1] + tau / 2 * mode[2], 2 / tau);
+          else
+            {
+              const double p = 0.54, q1 = (1 - 2 * p) / (2 * p * (1 - p)),
+                           q2 = 0.5 - p * q1, q0 = 0.5 - q1 - q2;
+              const double t1 = p * tau, t2 = (1 - p) * tau;
+              const Mode3  m1 =
+                stage(mode, t1, mode[1] + t1 / 2 * mode[2], 2 / t1);
+              mode = stage(m1,
+                           t2,
+                           m1[1] + t2 * (q0 * mode[2] + (0.5 + q1) * m1[2]),
+                           1 / (t2 * q2));
+            }
+        }
+      la::Vector expect = start.u;
+      expect *= mode[0];
+      expect -= state.u;
+      if (!two_stages)
+        {
+          const double theta = std::acos(1 - tau * tau * lambda_h / 2);
+          AssertThrow(std::abs(mode[0] - std::cos(n * theta)) < 1e-12,
+                      ExcInternalError());
+        }
+      unsigned int origin = 0;
+      for (const auto &cell : d.dof_handler.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v).norm() < 1e-12)
+            origin = cell->vertex_dof_index(v, 0);
+      deallog << "standing wave after " << n << " steps of " << tau
+              << " s: the discrete closed form at every dof: "
+              << (max_abs(expect) < 1e-10 ? "yes" : "no")
+              << "; u(0, t) - cos(c k t) = " << std::setprecision(2)
+              << state.u(origin) - std::cos(c * k * t) << std::setprecision(6)
+              << std::endl;
+
+      // stability at and above the limit
+      for (const auto &[fraction, steps] :
+           {std::pair{0.99, 2000u}, std::pair{1.01, 200u}})
+        {
+          BodyState rough = start;
+          rough.v         = 0;
+          rough.a         = 0;
+          for (unsigned int i = 0; i < rough.u.locally_owned_size(); ++i)
+            rough.u.local_element(i) =
+              d.fixed[i] ? 0. : ((i * 7919) % 101) / 101. - 0.5;
+          const double first = max_abs(rough.u);
+          double       most  = first;
+          const double dt    = fraction * step.stable_step();
+          for (unsigned int i = 0; i < steps; ++i)
+            {
+              rough = *step(rough, i * dt, dt);
+              most  = std::max(most, max_abs(rough.u));
+            }
+          deallog << fraction << " x the stable step, " << steps
+                  << " steps: max |u| / start "
+                  << (fraction < 1 ? "below 20: " : "above 1e6: ")
+                  << ((fraction < 1 ? most < 20 * first : most > 1e6 * first) ?
+                        "yes" :
+                        "no")
+                  << std::endl;
+        }
     }
 }

@@ -137,6 +137,15 @@ namespace rsfcycle
     double    maximum_step       = 100;
     /** The explicit step as a fraction of the stable step [-]. */
     double courant_number = 0.5;
+    /** The explicit step's scheme (models::ExplicitStep). */
+    enum class ExplicitScheme
+    {
+      /** Noh and Bathe's two sub-steps, p = 0.54: damps the shortest waves */
+      noh_bathe,
+      /** Newmark's explicit member: no numerical damping */
+      central_differences
+    };
+    ExplicitScheme explicit_scheme = ExplicitScheme::noh_bathe;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -69,13 +69,15 @@ namespace rsfcycle
       const physics::Discretisation<dim>               &discretisation,
       const physics::ContactQuadrature<dim>            &contact,
       const friction::Law                              &law,
-      std::function<double(const dealii::Point<dim> &)> along_base)
+      std::function<double(const dealii::Point<dim> &)> along_base,
+      const bool                                        two_stages)
       : discretisation(discretisation)
       , contact(contact)
       , law(law)
       , along_base(std::move(along_base))
       , potentials(contact.potentials(law))
       , load(discretisation.body_force)
+      , p(two_stages ? 0.54 : 0.)
     {
       load += discretisation.prestress_force;
       const la::LocalMatrix &M = discretisation.mass_local;
@@ -142,8 +144,12 @@ namespace rsfcycle
       find_blocks();
       discretisation.reinit(damping_force);
       const auto [lambda, h] = largest_cell_eigenvalue(discretisation);
-      stable                 = 2 / std::sqrt(lambda);
-      h_min                  = h;
+      // the largest omega tau of a stable step: central differences' 2;
+      // Noh and Bathe's p = 0.54 scheme: 3.745029, where the spectral
+      // radius of its amplification matrix for u'' = -omega^2 u reaches 1
+      // (bisection on the 3 x 3 matrix; test explicit_shear_wave)
+      stable = (p > 0 ? 3.745029 : 2.) / std::sqrt(lambda);
+      h_min  = h;
     }
 
 
@@ -153,11 +159,40 @@ namespace rsfcycle
                                   const double     t,
                                   const double     tau)
     {
+      if (p == 0)
+        {
+          la::Vector v_star = old.v;
+          v_star.add(tau / 2, old.a);
+          return stage(old, v_star, t, tau, 2 / tau, 0);
+        }
+      // Noh and Bathe (2013): central differences over p tau, then the
+      // rest with the velocity from the three accelerations
+      const double q1 = (1 - 2 * p) / (2 * p * (1 - p)), q2 = 0.5 - p * q1,
+                   q0    = 0.5 - q1 - q2;
+      const double tau_1 = p * tau, tau_2 = (1 - p) * tau;
+      la::Vector   v_base = old.v;
+      v_base.add(tau_1 / 2, old.a);
+      const auto middle = stage(old, v_base, t, tau_1, 2 / tau_1, 0);
+      if (!middle)
+        return {};
+      v_base = middle->v;
+      v_base.add(tau_2 * q0, old.a, tau_2 * (0.5 + q1), middle->a);
+      return stage(*middle, v_base, t + tau_1, tau_2, 1 / (tau_2 * q2), 1);
+    }
+
+
+    template <int dim>
+    std::optional<BodyState>
+    ExplicitStep<dim>::stage(const BodyState   &old,
+                             const la::Vector  &v_star,
+                             const double       t,
+                             const double       tau,
+                             const double       kappa,
+                             const unsigned int slot)
+    {
       BodyState next;
       next.u = old.u;
       next.u.add(tau, old.v, tau * tau / 2, old.a);
-      la::Vector v_star = old.v;
-      v_star.add(tau / 2, old.a);
 
       // r = f - K u_{n+1} - C v*, the force without friction
       la::Vector r;
@@ -169,13 +204,13 @@ namespace rsfcycle
 
       const bool split = !partner.empty();
       if (split)
-        pair_right_hand_sides(r, v_star, tau);
+        pair_right_hand_sides(r, v_star, kappa);
       next.v = v_star;
       for (unsigned int i = 0; i < n; ++i)
         if (single[i])
           next.v.local_element(i) +=
-            r.local_element(i) / (2 * mass[i] / tau + damping[i]);
-      solve_blocks(r, tau, next.v);
+            r.local_element(i) / (kappa * mass[i] + damping[i]);
+      solve_blocks(r, kappa, slot, next.v);
 
       // a split fault's normal stress: the + side's reaction at u_{n+1}
       const auto &nodes = contact.contact_set().nodes;
@@ -198,20 +233,20 @@ namespace rsfcycle
       // the contact: the state from the old slip rate, then from the mean
       std::vector<double> alpha(old.alpha.size());
       update_states(old, old.v, tau, alpha);
-      solve_contact(r, v_star, alpha, tau, next.v, nullptr);
+      solve_contact(r, v_star, alpha, kappa, next.v, nullptr);
       update_states(old, next.v, tau, alpha);
-      solve_contact(r, v_star, alpha, tau, next.v, &next.shear_traction);
+      solve_contact(r, v_star, alpha, kappa, next.v, &next.shear_traction);
       update_states(old, next.v, tau, alpha);
       next.alpha = std::move(alpha);
 
       discretisation.set_fixed_values(next.v, t + tau);
       if (split)
-        solve_pairs(tau, next.v);
+        solve_pairs(kappa, next.v);
       next.v.zero_out_ghost_values();
       discretisation.hanging_constraints.distribute(next.v);
       next.a = next.v;
       next.a -= v_star;
-      next.a *= 2 / tau;
+      next.a *= kappa;
 
       if (!finite(next, t, tau))
         return {};
@@ -253,7 +288,7 @@ namespace rsfcycle
     ExplicitStep<dim>::solve_contact(const la::Vector          &r,
                                      const la::Vector          &v_star,
                                      const std::vector<double> &alpha,
-                                     const double               tau,
+                                     const double               kappa,
                                      la::Vector                &v,
                                      std::vector<double>       *traction)
     {
@@ -267,14 +302,14 @@ namespace rsfcycle
           for (unsigned int l = 0; l < nodes[k].n_dofs; ++l)
             {
               const auto i = nodes[k].dofs[l];
-              a[l]         = 2 * mass[i] / tau + damping[i];
+              a[l]         = kappa * mass[i] + damping[i];
               rho[l]   = r.local_element(i) + a[l] * v_star.local_element(i);
               guess[l] = v.local_element(i);
               if (!partner.empty() &&
                   partner[i] != dealii::numbers::invalid_unsigned_int)
                 {
                   // the pair's mean eliminated
-                  const auto [a_pair, rho_pair] = condensed(i, tau);
+                  const auto [a_pair, rho_pair] = condensed(i, kappa);
                   a[l] -= a_pair;
                   rho[l] = rho_pairs.local_element(i) - rho_pair;
                 }
@@ -370,29 +405,30 @@ namespace rsfcycle
 
     template <int dim>
     void
-    ExplicitStep<dim>::solve_blocks(const la::Vector &r,
-                                    const double      tau,
-                                    la::Vector       &v)
+    ExplicitStep<dim>::solve_blocks(const la::Vector  &r,
+                                    const double       kappa,
+                                    const unsigned int slot,
+                                    la::Vector        &v)
     {
-      // (2/tau M_L + C)^-1 of every block, inverted again only when the
-      // step changes (the last step before End time, or a new Courant
-      // step)
-      if (tau != blocks_tau)
+      // (kappa M_L + C)^-1 of every block, one per stage of a step,
+      // inverted again only when the step changes (the last step before
+      // End time, or a new Courant step)
+      if (kappa != blocks_kappa[slot])
         {
           for (auto &block : blocks)
             {
-              block.inverse = block.damping;
+              block.inverse[slot] = block.damping;
               for (unsigned int k = 0; k < block.dofs.size(); ++k)
-                block.inverse(k, k) += 2 * mass[block.dofs[k]] / tau;
-              block.inverse.gauss_jordan();
+                block.inverse[slot](k, k) += kappa * mass[block.dofs[k]];
+              block.inverse[slot].gauss_jordan();
             }
-          blocks_tau = tau;
+          blocks_kappa[slot] = kappa;
         }
       for (const auto &block : blocks)
         for (unsigned int k = 0; k < block.dofs.size(); ++k)
           for (unsigned int l = 0; l < block.dofs.size(); ++l)
             v.local_element(block.dofs[k]) +=
-              block.inverse(k, l) * r.local_element(block.dofs[l]);
+              block.inverse[slot](k, l) * r.local_element(block.dofs[l]);
     }
 
 
@@ -400,15 +436,15 @@ namespace rsfcycle
     void
     ExplicitStep<dim>::pair_right_hand_sides(const la::Vector &r,
                                              const la::Vector &v_star,
-                                             const double      tau)
+                                             const double      kappa)
     {
       v_star.update_ghost_values();
       for (unsigned int i = 0; i < partner.size(); ++i)
         if (partner[i] != dealii::numbers::invalid_unsigned_int)
           rho_pairs.local_element(i) =
             r.local_element(i) +
-            (2 * mass[i] / tau + damping[i]) * v_star.local_element(i) +
-            (2 * mass_coupling[i] / tau + damping_coupling[i]) *
+            (kappa * mass[i] + damping[i]) * v_star.local_element(i) +
+            (kappa * mass_coupling[i] + damping_coupling[i]) *
               v_star.local_element(partner[i]);
       rho_pairs.update_ghost_values();
     }
@@ -416,35 +452,34 @@ namespace rsfcycle
 
     template <int dim>
     std::pair<double, double>
-    ExplicitStep<dim>::condensed(const unsigned int i, const double tau) const
+    ExplicitStep<dim>::condensed(const unsigned int i, const double kappa) const
     {
-      const unsigned int p = partner[i];
-      const double a_ip    = 2 * mass_coupling[i] / tau + damping_coupling[i];
-      const double a_pp    = 2 * mass_diagonal.local_element(p) / tau +
-                          damping_diagonal.local_element(p);
-      return {a_ip * a_ip / a_pp, a_ip * rho_pairs.local_element(p) / a_pp};
+      const unsigned int j    = partner[i];
+      const double       a_ij = kappa * mass_coupling[i] + damping_coupling[i];
+      const double       a_jj = kappa * mass_diagonal.local_element(j) +
+                          damping_diagonal.local_element(j);
+      return {a_ij * a_ij / a_jj, a_ij * rho_pairs.local_element(j) / a_jj};
     }
 
 
     template <int dim>
     void
-    ExplicitStep<dim>::solve_pairs(const double tau, la::Vector &v) const
+    ExplicitStep<dim>::solve_pairs(const double kappa, la::Vector &v) const
     {
       // a free slip off the contact (none in the shipped meshes) first,
       // then every free mean from its slip (ghosts exchanged between)
       for (const unsigned int i : free_slips)
         {
-          const auto [a_pair, rho_pair] = condensed(i, tau);
+          const auto [a_pair, rho_pair] = condensed(i, kappa);
           v.local_element(i) = (rho_pairs.local_element(i) - rho_pair) /
-                               (2 * mass[i] / tau + damping[i] - a_pair);
+                               (kappa * mass[i] + damping[i] - a_pair);
         }
       v.update_ghost_values();
       for (const unsigned int i : free_means)
-        v.local_element(i) =
-          (rho_pairs.local_element(i) -
-           (2 * mass_coupling[i] / tau + damping_coupling[i]) *
-             v.local_element(partner[i])) /
-          (2 * mass[i] / tau + damping[i]);
+        v.local_element(i) = (rho_pairs.local_element(i) -
+                              (kappa * mass_coupling[i] + damping_coupling[i]) *
+                                v.local_element(partner[i])) /
+                             (kappa * mass[i] + damping[i]);
     }
 
 

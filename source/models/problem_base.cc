@@ -249,7 +249,9 @@ namespace rsfcycle
           *parameters.solver.law,
           [this](const Point<dim> &p) {
             return scene.along_base_coordinate(p);
-          });
+          },
+          parameters.time_stepping.explicit_scheme ==
+            TimeSteppingParameters::ExplicitScheme::noh_bathe);
       }
   }
 
@@ -509,10 +511,15 @@ namespace rsfcycle
           << parameters.time_stepping.courant_number *
                explicit_stepper->stable_step()
           << " s, Courant number " << parameters.time_stepping.courant_number
-          << " x the stable step 2/omega_max = "
-          << explicit_stepper->stable_step()
-          << " s (the largest cell eigenvalue of the lumped mass and the "
-             "stiffness; smallest cell "
+          << " x the stable step " << explicit_stepper->stable_step()
+          << " s of " << name_of(parameters.time_stepping.explicit_scheme)
+          << " ("
+          << (parameters.time_stepping.explicit_scheme ==
+                  TimeSteppingParameters::ExplicitScheme::noh_bathe ?
+                "3.745" :
+                "2")
+          << "/omega_max, omega_max^2 the largest cell eigenvalue of the "
+             "lumped mass and the stiffness; smallest cell "
           << explicit_stepper->smallest_cell() << " m)" << std::endl;
     if (const auto *mg =
           dynamic_cast<const solvers::MultigridCorrection<dim> *>(

@@ -2,6 +2,7 @@
 #ifndef rsfcycle_models_explicit_step_h
 #define rsfcycle_models_explicit_step_h
 
+#include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/lac/full_matrix.h>
 #include <functional>
@@ -20,29 +21,38 @@ namespace rsfcycle
   {
     /**
      * One explicit step of the elastic continuum with inertia (`Time
-     * stepping/Integrator = explicit`): Newmark's explicit member (beta =
-     * 0, gamma = 1/2, central differences) with the lumped mass M_L (the
-     * row sums of M) and the damping C of the absorbing faces' dashpots,
+     * stepping/Integrator = explicit`) with the lumped mass M_L (the row
+     * sums of M) and the damping C of the absorbing faces' dashpots,
      * lumped at the vertices (a dim x dim block per vertex on a face not
      * aligned with the axes, solved as such; couplings outside a vertex or
      * a split fault's pair, as at a fault's end on an absorbing face, act
-     * at v*, on the right-hand side),
-     *   u_{n+1} = u_n + tau v_n + tau^2/2 a_n,   v* = v_n + tau/2 a_n,
-     *   (2/tau M_L + C) v_{n+1} = (2/tau M_L + C) v* + f - K u_{n+1} - C v*
+     * at v*, on the right-hand side). Its stage from (u, v, a) over tau,
+     * given a base velocity v* and a coefficient kappa:
+     *   u_{n+1} = u_n + tau v_n + tau^2/2 a_n,
+     *   (kappa M_L + C) v_{n+1} = (kappa M_L + C) v* + f - K u_{n+1} - C v*
      *                             - the friction force,
-     *   a_{n+1} = 2 (v_{n+1} - v*) / tau,
+     *   a_{n+1} = kappa (v_{n+1} - v*),
      * every dof (or vertex) on its own: K is applied as a product, and on a
      * contact node the slip rate solves the node-local problem of the implicit
      * path's Gauss-Seidel sweep (friction::solve_local_problem) with the
      * node's friction potential at the state of t_{n+1}. The state takes
-     * the law's closed-form update with the mean slip rate of the step, in
+     * the law's closed-form update with the mean slip rate of the stage, in
      * two passes (the state from the old slip rate, the slip rate, the
      * state from the mean, the slip rate again). The state (u, v, a,
      * alpha) is the implicit step's, so that a run may take either.
      *
+     * Central differences (Newmark's beta = 0, gamma = 1/2) are one stage
+     * with v* = v_n + tau/2 a_n and kappa = 2/tau. Noh and Bathe's scheme
+     * (2013, p = 0.54; `Explicit scheme = noh-bathe`) takes two: central
+     * differences over p tau, then over (1 - p) tau from that stage's
+     * state with v** = v_p + (1 - p) tau (q0 a_n + (1/2 + q1) a_p) and
+     * kappa = 1/((1 - p) tau q2), q1 = (1 - 2p)/(2p(1 - p)), q2 = 1/2 - p
+     * q1, q0 = 1/2 - q1 - q2: second order, with a numerical damping that
+     * grows as (omega tau)^3 per period and takes the shortest waves.
+     *
      * A split fault (physics/split_fault.h: the slip s and the mean m of
      * each tangential pair, one shared normal w): the tie makes the lumped
-     * mass a 2x2 block per pair, A = 2/tau M~ + C~ on (s, m), so the pair
+     * mass a 2x2 block per pair, A = kappa M~ + C~ on (s, m), so the pair
      * is solved together, as split-node codes do: the slip from the
      * node-local problem with a_s - a_sm^2/a_m in place of the diagonal
      * and rho_s - a_sm rho_m/a_m as its right-hand side, then the mean
@@ -51,10 +61,11 @@ namespace rsfcycle
      * (physics::split_normal_stresses, the implicit step's); a node that
      * loses its compression fails the step.
      *
-     * Stable for tau <= stable_step() = 2/omega_max: omega_max^2, the
-     * largest eigenvalue of M_L^-1 K, is bounded from above by the largest
-     * of every cell's K_e x = lambda M_L,e x (the element eigenvalue
-     * theorem; sharp on a uniform mesh).
+     * Stable for tau <= stable_step() = Omega/omega_max, Omega = 2 for
+     * central differences and 3.745029 for Noh and Bathe's p = 0.54:
+     * omega_max^2, the largest eigenvalue of M_L^-1 K, is bounded from
+     * above by the largest of every cell's K_e x = lambda M_L,e x (the
+     * element eigenvalue theorem; sharp on a uniform mesh).
      */
     template <int dim>
     class ExplicitStep
@@ -64,13 +75,13 @@ namespace rsfcycle
        * `along_base` gives the position along the base [m] that diagnoses
        * name.
        */
-      ExplicitStep(
-        const physics::Discretisation<dim>               &discretisation,
-        const physics::ContactQuadrature<dim>            &contact,
-        const friction::Law                              &law,
-        std::function<double(const dealii::Point<dim> &)> along_base);
+      ExplicitStep(const physics::Discretisation<dim>    &discretisation,
+                   const physics::ContactQuadrature<dim> &contact,
+                   const friction::Law                   &law,
+                   std::function<double(const dealii::Point<dim> &)> along_base,
+                   bool two_stages);
 
-      /** 2/omega_max [s] (collective at construction). */
+      /** Omega/omega_max [s] (collective at construction). */
       double
       stable_step() const
       {
@@ -109,6 +120,19 @@ namespace rsfcycle
 
     private:
       /**
+       * A stage of length tau from `old` at time t with the base velocity
+       * v_star and the mass's coefficient kappa (class comment); `slot`:
+       * which of the step's stages (the blocks' inverses kept per stage).
+       */
+      std::optional<BodyState>
+      stage(const BodyState  &old,
+            const la::Vector &v_star,
+            double            t,
+            double            tau,
+            double            kappa,
+            unsigned int      slot);
+
+      /**
        * The slip rate of every contact node of this rank into v (and the
        * friction force per unit area into `traction`) for the states
        * alpha, from r (the force without friction) and v*.
@@ -117,7 +141,7 @@ namespace rsfcycle
       solve_contact(const la::Vector          &r,
                     const la::Vector          &v_star,
                     const std::vector<double> &alpha,
-                    double                     tau,
+                    double                     kappa,
                     la::Vector                &v,
                     std::vector<double>       *traction);
 
@@ -140,25 +164,28 @@ namespace rsfcycle
       void
       find_blocks();
 
-      /** v += (2/tau M_L + C)^-1 r on every block. */
+      /** v += (kappa M_L + C)^-1 r on every block. */
       void
-      solve_blocks(const la::Vector &r, double tau, la::Vector &v);
+      solve_blocks(const la::Vector &r,
+                   double            kappa,
+                   unsigned int      slot,
+                   la::Vector       &v);
 
       /**
-       * rho = r + A v* of a split fault's paired dofs (A = 2/tau M + C with
+       * rho = r + A v* of a split fault's paired dofs (A = kappa M + C with
        * the pair's coupling), ghosts updated; v of the paired dofs that are
        * neither on the contact nor prescribed, after the contact's.
        */
       void
       pair_right_hand_sides(const la::Vector &r,
                             const la::Vector &v_star,
-                            double            tau);
+                            double            kappa);
       void
-      solve_pairs(double tau, la::Vector &v) const;
+      solve_pairs(double kappa, la::Vector &v) const;
 
       /** The pair's a_sm^2 / a_m and a_sm rho_m / a_m of paired dof i. */
       std::pair<double, double>
-      condensed(unsigned int i, double tau) const;
+      condensed(unsigned int i, double kappa) const;
 
       void
       update_states(const BodyState     &old,
@@ -189,20 +216,22 @@ namespace rsfcycle
       {
         std::vector<unsigned int>  dofs;
         dealii::FullMatrix<double> damping;
-        /** (2/tau M_L + C)^-1 on the block for tau = blocks_tau. */
-        dealii::FullMatrix<double> inverse;
+        /** (kappa M_L + C)^-1 on the block per stage, kappa = blocks_kappa */
+        std::array<dealii::FullMatrix<double>, 2> inverse;
       };
-      std::vector<Block> blocks;
-      double             blocks_tau = 0;
+      std::vector<Block>    blocks;
+      std::array<double, 2> blocks_kappa{};
       /** A split fault's free slips and means off the contact. */
       std::vector<unsigned int> free_slips, free_means;
       /** Per owned dof: free, off the contact and the pairs, in no block. */
       std::vector<bool> single;
-      /** C v* of a step. */
-      la::Vector  damping_force;
-      la::Vector  mass_diagonal, damping_diagonal, rho_pairs;
-      double      stable = 0, h_min = 0;
-      std::string refused, failure;
+      /** C v* of a stage. */
+      la::Vector damping_force;
+      la::Vector mass_diagonal, damping_diagonal, rho_pairs;
+      double     stable = 0, h_min = 0;
+      /** Noh and Bathe's p (0: central differences). */
+      const double p;
+      std::string  refused, failure;
     };
   } // namespace models
 } // namespace rsfcycle

@@ -37,10 +37,11 @@ namespace rsfcycle
      * below R tau_e, or after the 32 steps, the run returns to explicit
      * steps and the interval to the next trial doubles (at most 4096
      * steps). A trial is a window, not one comparison: the explicit
-     * step has no numerical dissipation, so waves the mesh traps after an
-     * event ring on until the implicit steps (generalized-alpha with
-     * Spectral radius < 1) damp them; an estimate taken from the undamped
-     * state would keep the run explicit long after the event.
+     * step damps only the short waves (Explicit damping), so waves the
+     * mesh traps after an event ring on until they are damped (by the
+     * implicit steps' generalized-alpha with Spectral radius < 1, or the
+     * explicit damping); an estimate taken from one state would keep the
+     * run explicit while they ring.
      *
      * Every decision counts steps, so a run is the same on any number of
      * ranks and after a resume. A model without an explicit step (viscous

@@ -33,7 +33,7 @@ namespace rsfcycle
      * spatial problem strictly convex and TNNMG unchanged.
      *
      * A new scheme is a class derived from TimeScheme in its own header and
-     * one line in time::make_scheme() (source/time/schemes.cc).
+     * one line in schemes() of source/time/schemes.cc.
      */
     class TimeScheme
     {

@@ -69,6 +69,7 @@ namespace
          "volume method, one rank)\n"
          "  seas-bp4-qd.prm       SEAS BP4-QD (3D whole space, free rake)\n"
          "  seas-bp5-qd.prm       SEAS BP5-QD (3D half-space, free rake)\n"
+         "  seas-bp5-fd.prm       SEAS BP5-FD (BP5 with inertia: explicit steps in events)\n"
          "  seas-bp6-qd-a.prm     SEAS BP6-QD-A (fluid injection, ageing law)\n"
          "  seas-bp6-qd-s.prm     SEAS BP6-QD-S (the same, slip law)\n"
          "  seas-bp7-qd.prm       SEAS BP7-QD (3D, a 200 m disc, nucleation)\n"

@@ -17,7 +17,7 @@ namespace rsfcycle
     /** The names of SeasParameters::Benchmark, in its order. */
     const char *const benchmark_names =
       "none|custom|BP1-QD|BP1-FD|BP2-QD|BP3-QD|BP3-FD|BP4-QD|BP5-QD|"
-      "BP6-QD-A|BP6-QD-S|BP7-QD|BP8-QD-GS|BP8-QD-PW";
+      "BP5-FD|BP6-QD-A|BP6-QD-S|BP7-QD|BP8-QD-GS|BP8-QD-PW";
 
     SeasParameters::Benchmark
     parse_benchmark(const std::string &name)
@@ -45,7 +45,8 @@ namespace rsfcycle
       "headers, field lines and extra files its description asks for "
       "(doc/seas.md lists them per benchmark): none (no SEAS files), "
       "custom (the files of Problem, for a model of your own), or one of "
-      "BP1-QD, BP1-FD, BP2-QD, BP3-QD, BP3-FD, BP4-QD, BP5-QD, BP6-QD-A, "
+      "BP1-QD, BP1-FD, BP2-QD, BP3-QD, BP3-FD, BP4-QD, BP5-QD, BP5-FD, "
+      "BP6-QD-A, "
       "BP6-QD-S, BP7-QD, BP8-QD-GS, BP8-QD-PW. The stations and profiles are placed by the "
       "entries below; python3 -m rsfcycle.seas check RUN checks a run "
       "folder against the benchmark's description");
@@ -467,6 +468,7 @@ namespace rsfcycle
           c.off_fault          = false;
           break;
         case Benchmark::bp5_qd:
+        case Benchmark::bp5_fd:
         case Benchmark::bp7_qd:
           // D5, D7 section 4: catalog.dat, the profiles stress_2_*, 4 lines
           c.profile_name_lines = 4;

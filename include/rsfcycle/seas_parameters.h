@@ -68,6 +68,7 @@ namespace rsfcycle
       bp3_fd,
       bp4_qd,
       bp5_qd,
+      bp5_fd,
       bp6_qd_a,
       bp6_qd_s,
       bp7_qd,

@@ -216,6 +216,28 @@ def _bp6(name, problem):
                   kind="profile", positions=(-10e3, 10e3, 201))])
 
 
+def _bp5(name):
+    """BP5-QD and BP5-FD: D5 asks both for the same files (section 4)."""
+    return Benchmark(
+        name, "SEAS Benchmark " + name, "D5 (BP5-QD and BP5-FD), section 4",
+        [FileRule(BP5_STATIONS, SERIES_KEYS + STEP_KEYS, PLANE_FIELDS,
+                  "D5 section 4.1: 10 stations fltst_strk+XXdp+YY (km)"),
+         FileRule(BP5_BLOCKS, SERIES_KEYS + STEP_KEYS, BLOCK_FIELDS,
+                  "D5 section 4.2: 9 off-fault stations blkst_*"),
+         FileRule(["global.dat"], SERIES_KEYS + STEP_KEYS,
+                  [["t", "max_slip_rate", "moment_rate"]],
+                  "D5 section 4.3: over |x2| <= 34 km, x3 <= 20 km"),
+         FileRule(["catalog.dat"], PROFILE_KEYS, CATALOG_FIELDS,
+                  "D5 section 4.4: the earthquake catalog", kind="table"),
+         FileRule(["rupture.dat"], PROFILE_KEYS, [["x2", "x3", "t"]],
+                  "D5 section 4.6: the first event's rupture times, 1e9 "
+                  "where a node never ruptures", kind="table")]
+        + _profiles_3d("stress", (-38e3, 38e3, 77), (0.0, 40e3, 41),
+                       "D5 section 4.5: slip_2, slip_3, stress_2, stress_3 "
+                       "along strike at 10 km and down dip at x2 = 0, four "
+                       "field lines"))
+
+
 BENCHMARKS = [
     _bp1("BP1-QD", "SEAS Benchmark No.1", BP1_DEPTHS, "D1, sections 4 and 5",
          ["D1 asks for no global.dat or surface stations: the station at "
@@ -249,24 +271,8 @@ BENCHMARKS = [
         ["HBI names the station at (-22.5, -7.5) km fltst_strk-225dp-750, "
          "which breaks the 100 m naming of the others (it would be "
          "dp-075); rsfcycle writes HBI's name."]),
-    Benchmark(
-        "BP5-QD", "SEAS Benchmark BP5-QD", "D5 (BP5-QD and BP5-FD), section 4",
-        [FileRule(BP5_STATIONS, SERIES_KEYS + STEP_KEYS, PLANE_FIELDS,
-                  "D5 section 4.1: 10 stations fltst_strk+XXdp+YY (km)"),
-         FileRule(BP5_BLOCKS, SERIES_KEYS + STEP_KEYS, BLOCK_FIELDS,
-                  "D5 section 4.2: 9 off-fault stations blkst_*"),
-         FileRule(["global.dat"], SERIES_KEYS + STEP_KEYS,
-                  [["t", "max_slip_rate", "moment_rate"]],
-                  "D5 section 4.3: over |x2| <= 34 km, x3 <= 20 km"),
-         FileRule(["catalog.dat"], PROFILE_KEYS, CATALOG_FIELDS,
-                  "D5 section 4.4: the earthquake catalog", kind="table"),
-         FileRule(["rupture.dat"], PROFILE_KEYS, [["x2", "x3", "t"]],
-                  "D5 section 4.6: the first event's rupture times, 1e9 "
-                  "where a node never ruptures", kind="table")]
-        + _profiles_3d("stress", (-38e3, 38e3, 77), (0.0, 40e3, 41),
-                       "D5 section 4.5: slip_2, slip_3, stress_2, stress_3 "
-                       "along strike at 10 km and down dip at x2 = 0, four "
-                       "field lines")),
+    _bp5("BP5-QD"),
+    _bp5("BP5-FD"),
     _bp6("BP6-QD-A", "SEAS Benchmark BP6-A"),
     _bp6("BP6-QD-S", "SEAS Benchmark BP6-S"),
     Benchmark(
@@ -317,6 +323,7 @@ PEERS = {
                "files afterwards; its older header labels the off-fault "
                "velocities log10 m/s (D5: not log10); tandem nucleates "
                "with V_i = 0.01 m/s (D5: 0.03 m/s)."],
+    "BP5-FD": ["As BP5-QD."],
     "BP6-QD-A": ["HBI's global.dat has 5 columns under a 3-name field "
                  "line, and its profiles' 'Computational domain size' line "
                  "lacks its '#'."],

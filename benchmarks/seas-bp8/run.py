@@ -19,6 +19,12 @@ From the repository's root, with the package on the path:
              stop     pw-40m-stop, pw-20m-stop: the well for 30 days, which
                       stops where sigma_0 - p reaches 0 (their SEAS files
                       are therefore unfinished)
+             probe    probe-40m, probe-20m, probe-10m: the well for 30
+                      days with fluid cells of 40, 20, 10 m on 40 m fault
+                      cells, sigma_0 = 1 GPa and steps of at most 600 s:
+                      the pressure at the well's node, which does not
+                      depend on the slip, and when it exceeds BP8's
+                      sigma_0 = 25 MPa
              domain   dom-free-y500 ... dom-rigid-y2000: GS at 20 m with
                       the far side y = Ly at 500, 1000, 2000 m, free slip
                       (the shipped condition, whose Ly is 1600 m) or a
@@ -65,6 +71,8 @@ MODELER = "rsfcycle benchmarks/seas-bp8"
 CELLS = {"40m": (1, 40), "20m": (2, 20), "10m": (3, 10)}  # refinements, m
 PW_END = HOUR
 STOP_TIMEOUT = 1800  # s of wall time for a run to the well's limit
+PROBE_SIGMA = 1e9  # Pa: the probes' normal stress, which no pressure here reaches
+PROBE_STEP = 600  # s: their largest step (rows of the stations), the fluid's step
 RIGID = "1: contact, 2: load, 3: free, 4: free, 5: creep, 6: free"
 
 # BP8's hydraulics (Table 1) for the closed form
@@ -72,6 +80,7 @@ Q0, T_OFF, L_INJ, HALF = 0.003, 100 * HOUR, 50.0, 400.0
 BETA, PHI, K, ETA_F, L_F = 1e-8, 0.1, 5e-14, 1e-3, 1.0
 ALPHA = K / (PHI * BETA * ETA_F)
 SIGMA0 = 25e6
+EQ_WINDOW = (25000.0, 100000.0)  # s: the times of EQquasi's pressure errors
 
 
 def run_list():
@@ -84,6 +93,11 @@ def run_list():
         runs[f"pw-{c}"] = ("pw", c, {"End time": PW_END}, 1, "pw", None)
     for c in ("40m", "20m"):
         runs[f"pw-{c}-stop"] = ("pw", c, {}, 1, "stop", None)
+    for c in CELLS:
+        runs[f"probe-{c}"] = ("pw", "40m", {"Mesh file/Friction/Pore fluid/Cell size":
+                                            CELLS[c][1], "Mesh file/Friction/Normal stress":
+                                            PROBE_SIGMA, "Time stepping/Maximum step":
+                                            PROBE_STEP}, 1, "probe", None)
     for wall in ("free", "rigid"):
         for ly in (500, 1000, 2000):
             runs[f"dom-{wall}-y{ly}"] = ("gs", "20m", {}, 1, "domain", (3200, ly, wall))
@@ -255,6 +269,14 @@ def context(folder):
     return ctx, cores
 
 
+def error_between(folder, start, end):
+    """The centre's largest relative pressure error against the closed
+    form over the rows between start and end [s]."""
+    t, p = station(folder, CENTRE, "pore_pressure")
+    return max(abs(1e6 * p[k] - closed_form(0.0, 0.0, t[k])) / closed_form(0.0, 0.0, t[k])
+               for k in range(len(t)) if start <= t[k] <= end)
+
+
 def pressure_errors(folder):
     """The centre's pore pressure against the closed form: (relative
     error at the last row at or before the shut-in, that row's time [s]
@@ -301,6 +323,24 @@ def checked(folder):
 
 
 # ---------------------------------------------------------------- results
+
+def crossings(t, values, level):
+    """(the first time values rise to level, the last time they fall
+    below it) [s], linear between rows; None if they never reach it."""
+    high = np.nonzero(values >= level)[0]
+    if len(high) == 0:
+        return None
+    i, j = high[0], high[-1]
+    up = t[i] if i == 0 else np.interp(level, values[i - 1:i + 1], t[i - 1:i + 1])
+    down = t[j] if j == len(t) - 1 else np.interp(level, values[j + 1:j - 1:-1],
+                                                    t[j + 1:j - 1:-1])
+    return float(up), float(down)
+
+
+def sci(x, digits=4):
+    """3.087e-7 rather than 3.087e-07."""
+    return re.sub(r"e([+-])0*(\d)", r"e\1\2", f"{x:.{digits - 1}e}")
+
 
 def pct(x, digits=2):
     return hbi.signed(100 * x, digits)
@@ -354,18 +394,24 @@ def results_(args):
             (f"gs{c[:-1]}.p_error", f"{100 * err:.3f}", "%",
              f"GS, {c[:-1]} m: pore pressure at the centre against the closed form at "
              f"t = {t_row:.0f} s, the last row before the shut-in ({exact / 1e6:.3f} MPa)"),
+            (f"gs{c[:-1]}.p_error_eq", f"{100 * error_between(folder, *EQ_WINDOW):.2f}",
+             "%", f"GS, {c[:-1]} m: the centre's largest pressure error against the closed "
+             "form from 25000 to 100000 s (the times of EQquasi's table)"),
             (f"gs{c[:-1]}.p_error_max", f"{100 * worst:.3f}", "%",
              f"GS, {c[:-1]} m: largest difference at the centre over the 30 days, "
              "relative to the closed form at the shut-in"),
-            (f"gs{c[:-1]}.peak", f"{v:.4g}", "m/s",
+            (f"gs{c[:-1]}.peak", sci(v), "m/s",
              f"GS, {c[:-1]} m: the fault's maximum slip rate, at day {day:.2f}"),
             (f"gs{c[:-1]}.steps", f"{steps(folder)}", "",
              f"GS, {c[:-1]} m: time steps over the 30 days"),
         ]
         if wall:
-            rows.append((f"gs{c[:-1]}.cost", hbi.duration(wall), "",
-                         f"GS, {c[:-1]} m: the whole run on one rank (operator "
-                         f"{operator:.0f} s, time loop {loop:.0f} s)"))
+            rows += [(f"gs{c[:-1]}.cost", hbi.duration(wall), "",
+                      f"GS, {c[:-1]} m: the whole run on one rank"),
+                     (f"gs{c[:-1]}.operator", f"{operator:.0f}", "s",
+                      f"GS, {c[:-1]} m: the Green's functions (TimerOutput)"),
+                     (f"gs{c[:-1]}.loop", f"{loop:.0f}", "s",
+                      f"GS, {c[:-1]} m: the time loop (TimerOutput)")]
         hbi.record(HERE, rows, *context(folder))
     if have("gs-40m", "gs-20m", "gs-10m"):
         ctx = context(gs["10m"])
@@ -397,7 +443,7 @@ def results_(args):
         rows = [
             (f"pw{c[:-1]}.p_well", f"{p_well:.3f}", "MPa",
              f"PW, {c[:-1]} m: pore pressure at the well's node at t = {end / HOUR:g} h"),
-            (f"pw{c[:-1]}.slip_centre", f"{1e6 * centre:.1f}", "µm",
+            (f"pw{c[:-1]}.slip_centre", f"{1e3 * centre:.4f}", "mm",
              f"PW, {c[:-1]} m: slip at the well at t = {end / HOUR:g} h"),
         ]
         if wall:
@@ -417,17 +463,42 @@ def results_(args):
                                f"at the well's node, at t = {t_stop:.0f} s (GS's centre "
                                f"then {p_gs:.1f} MPa)")], *context(found[name]))
 
+    # the well's node: when its pressure exceeds sigma_0
+    for c in CELLS:
+        name = f"probe-{c}"
+        if name not in found:
+            continue
+        t, p = station(found[name], CENTRE, "pore_pressure")
+        above = crossings(t, 1e6 * p, SIGMA0)
+        k = int(np.argmax(p))
+        span = (f"from {above[0] / HOUR:.2f} h to {above[1] / HOUR:.2f} h" if above
+                else "never")
+        hbi.record(HERE, [
+            (f"pw{c[:-1]}.p_max", f"{p[k]:.1f}", "MPa",
+             f"PW, fluid cells of {c[:-1]} m: the largest pressure at the well's node, "
+             f"at t = {t[k] / HOUR:.1f} h"),
+            (f"pw{c[:-1]}.above", span, "", f"PW, fluid cells of {c[:-1]} m: the well's "
+             "node above sigma_0 = 25 MPa"),
+        ], *context(found[name]))
+
     # the body's extent at 20 m
     domain = []
     for name in sorted(found):
         if name.startswith(("dom-", "box-")) or name == "gs-20m":
             centre, edge, _ = slips(found[name])
-            key = "dom.shipped" if name == "gs-20m" else name.replace("-", "_")
+            key = "dom.shipped" if name == "gs-20m" else "dom." + (
+                name[4:] if name.startswith("dom-") else name).replace("-", "_")
             label = ("x, z +-3200 m, free slip at y = 1600 m (the shipped body)"
                      if name == "gs-20m" else describe(name))
-            domain.append((key, f"{edge / centre:.3f}", "",
-                           f"GS, 20 m, {label}: edge/centre slip, {1e3 * edge:.2f} / "
-                           f"{1e3 * centre:.2f} mm"))
+            domain += [(key, f"{edge / centre:.3f}", "", f"GS, 20 m, {label}: edge/centre slip"),
+                       (key + ".centre", f"{1e3 * centre:.2f}", "mm",
+                        f"GS, 20 m, {label}: slip at the centre"),
+                       (key + ".edge", f"{1e3 * edge:.2f}", "mm",
+                        f"GS, 20 m, {label}: slip at (-200, 0) m")]
+    if "box-xz500-y500" in found:
+        v, day = peak(found["box-xz500-y500"])
+        domain.append(("dom.box_xz500_y500.peak", sci(v), "m/s", "GS, 20 m, x, y, z +-500 m "
+                       f"(EQquasi's box): the fault's maximum slip rate, at day {day:.2f}"))
     if domain:
         hbi.record(HERE, domain, *context(found.get("gs-20m") or first))
 
@@ -436,15 +507,16 @@ def results_(args):
         folder = found["gs-10m-2ranks"]
         wall, loop, operator = hbi.rsfcycle_times(folder)
         hbi.record(HERE, [
-            ("cost.gs10_2ranks", hbi.duration(wall), "",
-             f"GS, 10 m, 30 days on 2 ranks, the whole run (operator {operator:.0f} s, "
-             f"time loop {loop:.0f} s)"),
+            ("cost.gs10_2ranks", hbi.duration(wall), "", "GS, 10 m, 30 days on 2 ranks, "
+             "the whole run"),
+            ("cost.gs10_2ranks_operator", f"{operator:.0f}", "s", "GS, 10 m, 2 ranks: the "
+             "Green's functions"),
+            ("cost.gs10_2ranks_loop", f"{loop:.0f}", "s", "GS, 10 m, 2 ranks: the time loop"),
         ], *context(folder))
 
     # the SEAS table's rows
     if have("gs-10m"):
         folder = found["gs-10m"]
-        centre, edge, _ = slips(folder)
         v, day = peak(folder)
         n = events(folder)
         table = [
@@ -452,40 +524,46 @@ def results_(args):
              "contact nodes)"),
             ("bp8-qd-gs.events", "none in 30 d (aseismic)" if n == 0 else f"{n} in 30 d",
              "", "events (max V >= 1 mm/s)"),
-            ("bp8-qd-gs.peer", "none; EQquasi's figures", "", "no peer run here: EQquasi's "
-             "published BP8 figures (50 m) are compared in the README"),
+            ("bp8-qd-gs.peer", "none; EQquasi's published figures", "",
+             "no peer run here: EQquasi's published BP8 figures (50 m) are compared in "
+             "the README"),
             ("bp8-qd-gs.recurrence", f"no events; p(0) at 100 h {100 * errors['10m']:.3f} % "
              "from the closed form", "", "the centre's pore pressure against the closed "
              "form at the last row before the shut-in"),
-            ("bp8-qd-gs.peak_slip_rate", f"{v:.3g} m/s at day {day:.2f}", "",
+            ("bp8-qd-gs.peak_slip_rate", f"no peer; {sci(v, 3)} m/s at day {day:.2f}", "",
              "the fault's maximum slip rate (no peer)"),
         ]
+        wall, _, _ = hbi.rsfcycle_times(folder)
+        table.append(("bp8-qd-gs.cost", hbi.duration(wall), "",
+                      "30 days at 10 m, operator included"))
         hbi.record(HERE, table, *context(folder))
-        if have("gs-10m-2ranks"):
-            wall, _, _ = hbi.rsfcycle_times(found["gs-10m-2ranks"])
-            hbi.record(HERE, [("bp8-qd-gs.cost", hbi.duration(wall), "",
-                               "30 days at 10 m, operator included")],
-                       *context(found["gs-10m-2ranks"]))
     if have("pw-10m"):
         folder = found["pw-10m"]
         wall, _, _ = hbi.rsfcycle_times(folder)
-        stops = [f"{c}: {stop_time(found[f'pw-{c}-stop']) / HOUR:.1f} h"
-                 for c in ("40m", "20m") if f"pw-{c}-stop" in found
-                 and stop_time(found[f"pw-{c}-stop"])]
+        # where sigma_0 - p reaches 0 at the well: the probes' crossing
+        stops = {}
+        for c in CELLS:
+            if f"probe-{c}" in found:
+                t, p = station(found[f"probe-{c}"], CENTRE, "pore_pressure")
+                above = crossings(t, 1e6 * p, SIGMA0)
+                if above:
+                    stops[c] = above[0] / HOUR
         v, day = peak(folder)
         hbi.record(HERE, [
             ("bp8-qd-pw.cells", "10", "m", f"fault and fluid cells ({contact_nodes(folder)} "
              "contact nodes)"),
             ("bp8-qd-pw.events", "none to 1 h", "", "events (max V >= 1 mm/s) in the "
              "hour run"),
-            ("bp8-qd-pw.cost", hbi.duration(wall), "", "the first hour at 10 m, operator "
-             "included"),
+            ("bp8-qd-pw.cost", hbi.duration(wall) + " for 1 h", "", "the first hour at 10 m, "
+             "operator included"),
             ("bp8-qd-pw.peer", "none", "", "no peer"),
-            ("bp8-qd-pw.recurrence", "stops where σ̄₀ − p = 0 at the well"
-             + (" (" + ", ".join(stops) + ")" if stops else ""), "",
+            ("bp8-qd-pw.recurrence", "the run stops: σ̄₀ − p = 0 at the well"
+             + (f" after {stops['10m']:.2f} h" if "10m" in stops else "")
+             + (" (" + ", ".join(f"{c[:-1]} m: {stops[c]:.2f} h" for c in ("20m", "40m")
+                                 if c in stops) + ")" if "20m" in stops else ""), "",
              "the well's node reaches p = sigma_0 long before 30 days at every cell size "
-             "run"),
-            ("bp8-qd-pw.peak_slip_rate", f"{v:.3g} m/s in the first hour", "",
+             "run (the probes)"),
+            ("bp8-qd-pw.peak_slip_rate", f"no peer; {sci(v, 3)} m/s in the first hour", "",
              "the fault's maximum slip rate over the hour run (no peer)"),
         ], *context(folder))
 

@@ -12,6 +12,7 @@
 #include <rsfcycle/output/files.h>
 #include <rsfcycle/physics/split_fault.h>
 #include <rsfcycle/simulator/simulator.templates.h>
+#include <rsfcycle/time/integrator.h>
 #include <rsfcycle/time/schemes.h>
 #include <stdexcept>
 
@@ -448,13 +449,20 @@ namespace rsfcycle
             }
         }
       if (!(least > 0))
-        throw std::runtime_error(
-          "Mesh file/Friction/Pore pressure: the effective normal stress |sigma_n| - "
-          "p is " +
-          format_number(least) + " Pa at " +
-          format_number(scene.along_base_coordinate(all_positions[weakest])) +
-          " m along the contact at t = " + format_number(t) +
-          " s; rate-and-state friction needs compression (> 0)");
+        {
+          std::string where;
+          for (unsigned int d = 0; d < dim; ++d)
+            where +=
+              (d == 0 ? "(" : ", ") + format_number(all_positions[weakest][d]);
+          throw time::CompressionLost(
+            "at t = " + format_number(t) +
+            " s the pore pressure left the fault node at (x, y" +
+            (dim == 3 ? ", z" : "") + ") = " + where +
+            ") m without compression: " + "sigma_n - p = " +
+            format_number(least) + " Pa (p = " +
+            format_number(pore_pressure(all_positions[weakest], t)) +
+            " Pa); rate-and-state friction needs sigma_n - p > 0");
+        }
     }
 
 

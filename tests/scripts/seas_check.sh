@@ -13,6 +13,8 @@
 #     header keys, the field lines, a first row at t = 0, times increasing,
 #     no NaN, the profiles' positions); --pack writes the archive with
 #     every file;
+#     A PW run whose pore pressure passes the normal stress stops with
+#     one line and exit status 1, its files complete;
 #  2. damaged copies of the BP1-QD folder are refused, each with its one
 #     line and exit status 1: a missing station, a stray file, a header
 #     without its date, a wrong field line, a NaN, a first row after
@@ -89,6 +91,23 @@ if run bp8-qd-pw seas-bp8-qd-pw.prm 21600 0 "subsection Mesh file" \
   pass "bp8-qd-pw: $(grep 'ready to upload' bp8-qd-pw.check)"
 else
   fail "bp8-qd-pw: $(head -3 bp8-qd-pw.check 2>/dev/null)"
+fi
+
+# BP8-QD-PW with a hundred times the injection rate: the pore pressure
+# passes the 25 MPa of normal stress within the first hour; the run stops
+# there with one line and exit status 1, and its files, ended at the last
+# accepted step, are still ready to upload
+run bp8-qd-pw-stop seas-bp8-qd-pw.prm 21600 0 "subsection Mesh file" \
+  "subsection Friction" "subsection Pore fluid" "set Cell size = 80" \
+  "set Injection rate = 0.3" "end" "end" "end"
+status=$?
+if [ $status -ne 0 ] && grep -q "without compression" bp8-qd-pw-stop.log &&
+   grep -q "^\*\*\* Stop: .*the last accepted step" bp8-qd-pw-stop/log.txt &&
+   check bp8-qd-pw-stop > bp8-qd-pw-stop.check 2>&1 &&
+   grep -q "ready to upload" bp8-qd-pw-stop.check; then
+  pass "bp8-qd-pw-stop: status $status, $(grep 'ready to upload' bp8-qd-pw-stop.check)"
+else
+  fail "bp8-qd-pw-stop: status $status, $(tail -1 bp8-qd-pw-stop.log)"
 fi
 
 # BP5-FD's first event (nucleated at t = 0) ends at 675 s at 4 km cells,

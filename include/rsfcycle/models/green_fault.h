@@ -292,9 +292,10 @@ namespace rsfcycle
                  double       *alpha_rate = nullptr) const;
 
       /**
-       * After non-finite rates at t: throw, naming the place, if a pore
-       * pressure left a node without compression (every rank finds the
-       * same node: the positions and stresses of all nodes are kept).
+       * After non-finite rates at t: throw time::CompressionLost, naming
+       * the place, if a pore pressure left a node without compression
+       * (every rank finds the same node: the positions and stresses of all
+       * nodes are kept).
        */
       void
       check_compression(double t) const;

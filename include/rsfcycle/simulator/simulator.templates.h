@@ -233,6 +233,14 @@ namespace rsfcycle
               report_underflow(e);
               throw;
             }
+          catch (const time::CompressionLost &e)
+            {
+              // the files end at the last accepted step, complete
+              log << "*** Stop: " << e.what() << "; the run ends at t = " << s.t
+                  << " s, the last accepted step" << std::endl;
+              finish();
+              throw;
+            }
           if (const std::string note = integrator->take_note(); !note.empty())
             log << "    " << note << std::endl;
           if (const std::string warning = integrator->take_warning();

@@ -19,6 +19,17 @@ namespace rsfcycle
     };
 
     /**
+     * Thrown when a pore pressure leaves a fault node without compression
+     * (sigma_n - p <= 0): rate-and-state friction has no solution there.
+     * The run ends at its last accepted step with its files complete.
+     */
+    class CompressionLost : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    /**
      * What an integrator carries from one advance() to the next, in a form
      * a checkpoint can hold: the step size, states it keeps (a step already
      * computed, or the history of accepted states) and numbers (their

@@ -109,6 +109,9 @@ RUNS = {
     "bp1-fd-ie": ("seas-bp1-fd.prm", dict(FD1, **IE),
                   "BP1-FD's first event, implicit-explicit (lumped mass, "
                   "Courant number 0.5)", "bp1-fd-ie.cost"),
+    "bp1-fd-ie3": ("seas-bp1-fd.prm", dict(FD3, **IE),
+                   "BP1-FD to its third event, implicit-explicit (lumped "
+                   "mass, Courant number 0.5)", "bp1-fd.ie3.cost"),
     "bp1-fd-ie-c025": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Time stepping/Courant number": 0.25}),
         "the same, Courant number 0.25", ""),
@@ -534,6 +537,7 @@ PYTHONPATH=python python3 -m rsfcycle.results write benchmarks/seas-bp1"""
                    found[1].folder)
     results_fd(work, record)
     results_fd_ie(work, record)
+    results_fd_ie3(work, record)
     results_bp2(work, record)
     return 0
 
@@ -570,6 +574,37 @@ def results_fd_ie(work, record):
                        f"implicit-explicit, {label}: CPU time over the "
                        "implicit step's (bp1-fd-wp-1e-5) to the first "
                        "event's end", name, found[0].folder)
+
+
+def results_fd_ie3(work, record):
+    """BP1-FD to its third event with explicit steps inside the events:
+    the events against SCycle's and the cost against SCycle's (its
+    time.txt from `peers`)."""
+    found = load(work, [("scycle-50m", "SCycle 50 m"),
+                        ("bp1-fd-ie3", "implicit-explicit")], "bp1-fd.ie3")
+    if len(found) != 2:
+        return
+    peer, ours = found
+    a, b = ours.events(FD_MERGE), peer.events(FD_MERGE)
+    print(catalog.markdown(catalog.compare(a, b), ours.label, peer.label))
+    record("bp1-fd.ie3.starts",
+           ", ".join(f"{e.start / YEAR:.2f}" for e in a), "yr",
+           "implicit-explicit: the events' starts (SCycle: " +
+           ", ".join(f"{e.start / YEAR:.2f}" for e in b) + " yr)",
+           "bp1-fd-ie3", ours.folder)
+    mine = context_of(work, "bp1-fd-ie3", ours.folder)
+    timing = os.path.join(work, "scycle-50m", "time.txt")
+    if "cpu_s" in mine:
+        cpu = int(round(mine["cpu_s"]))
+        record("bp1-fd.ie3.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
+               "implicit-explicit: CPU time of one core to the third "
+               f"event's end ({len(a)} events)", "bp1-fd-ie3", ours.folder)
+        if os.path.exists(timing):
+            theirs = time_v(timing)
+            record("bp1-fd.ie3.cost_ratio",
+                   f"{mine['cpu_s'] / theirs['cpu_s']:.2f}", "x",
+                   "implicit-explicit: CPU time over SCycle's to the third "
+                   "event", "bp1-fd-ie3", ours.folder)
 
 
 def first_event(s):

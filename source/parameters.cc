@@ -369,24 +369,6 @@ namespace rsfcycle
                                        const std::string &writers)
   {
     prm.enter_subsection("Output");
-    prm.declare_entry("Output interval",
-                      "10",
-                      Double(0),
-                      "Simulated time between VTU snapshots [s]");
-    prm.declare_entry("Event output interval",
-                      "0.1",
-                      Double(0),
-                      "Simulated time between VTU snapshots during events [s]");
-    prm.declare_entry("Profile interval",
-                      "1",
-                      Double(0),
-                      "Simulated time between rows of base-profile.csv while "
-                      "slip is slow (max V at most 2 v0 and no event) [s]");
-    prm.declare_entry("Event profile interval",
-                      "0.005",
-                      Double(0),
-                      "Simulated time between rows of base-profile.csv during "
-                      "events and while max V exceeds 2 v0 [s]");
     prm.declare_entry("Event threshold",
                       "10",
                       Double(1e-300),
@@ -416,16 +398,6 @@ namespace rsfcycle
       "snapshots as HDF5 with XDMF indices (solution.xdmf, fault.xdmf), one "
       "file per snapshot for any number of ranks. vtu and hdf5 need a body "
       "on a mesh (not the spring-slider)");
-    prm.declare_entry("Transition time",
-                      "0",
-                      Double(0),
-                      "Events starting before this time belong to the initial "
-                      "transition and are left out of the summary [s]");
-    prm.declare_entry("Transition events",
-                      "2",
-                      Integer(0),
-                      "The first this many events are left out of the "
-                      "summary as well [-]");
     prm.declare_entry("Checkpoint steps",
                       "5000",
                       Integer(0),
@@ -438,7 +410,6 @@ namespace rsfcycle
       "Write checkpoint.bin every this many minutes of wall-clock time as "
       "well (0: never) [min]; it is also written at the end, on "
       "SIGINT/SIGTERM and when the step size underflows");
-    SeasParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 

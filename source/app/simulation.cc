@@ -25,6 +25,7 @@ namespace rsfcycle
                                      scenes::scene_names(),
                                      time::scheme_names(),
                                      output::writer_names());
+      output::declare_parameters(prm);
       scenes::declare_parameters(prm);
       models::SpringSlider::declare_parameters(prm);
     }

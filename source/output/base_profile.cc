@@ -6,6 +6,24 @@ namespace rsfcycle
 {
   namespace output
   {
+    void
+    BaseProfile::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Profile interval",
+                        "1",
+                        Double(0),
+                        "Simulated time between rows of base-profile.csv "
+                        "while slip is slow (max V at most 2 v0 and no "
+                        "event) [s]");
+      prm.declare_entry("Event profile interval",
+                        "0.005",
+                        Double(0),
+                        "Simulated time between rows of base-profile.csv "
+                        "during events and while max V exceeds 2 v0 [s]");
+    }
+
+
     BaseProfile::BaseProfile(const std::string      &dir,
                              const Layout           &layout,
                              const OutputParameters &output)

@@ -17,6 +17,22 @@ namespace rsfcycle
 {
   namespace output
   {
+    void
+    declare_snapshot_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Output interval",
+                        "10",
+                        Double(0),
+                        "Simulated time between snapshots (vtu, hdf5) [s]");
+      prm.declare_entry("Event output interval",
+                        "0.1",
+                        Double(0),
+                        "Simulated time between snapshots (vtu, hdf5) "
+                        "during events [s]");
+    }
+
+
     using namespace dealii;
 
     namespace

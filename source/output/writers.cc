@@ -26,12 +26,16 @@ namespace rsfcycle
         const std::string dir;
       };
 
-      /** A writer's name, the fields it needs and its factory. */
+      /**
+       * A writer's name, the fields it needs, its factory and the function
+       * that declares its entries in subsection Output (none: nullptr).
+       */
       struct WriterType
       {
         std::string                                             name;
         std::vector<Field>                                      needs;
         std::function<std::unique_ptr<Writer>(const Context &)> make;
+        void (*declare)(dealii::ParameterHandler &) = nullptr;
       };
 
       /** The SEAS files of a 2D (a line of nodes) or a 3D fault. */
@@ -73,16 +77,27 @@ namespace rsfcycle
              return std::make_unique<BaseProfile>(c.dir,
                                                   c.layout,
                                                   c.parameters.output);
-           }},
+           },
+           BaseProfile::declare_parameters},
           {"events",
            {Field::contact},
            [](const Context &c) {
              return std::make_unique<EventCatalogue>(
                c.dir, !c.layout.lateral_positions.empty());
-           }},
-          {"seas", {Field::contact, Field::stresses}, seas_files},
-          {"vtu", {Field::body}, body_writer<VtuSnapshots>},
-          {"hdf5", {Field::body}, body_writer<Hdf5Snapshots>}};
+           },
+           EventCatalogue::declare_parameters},
+          {"seas",
+           {Field::contact, Field::stresses},
+           seas_files,
+           SeasParameters::declare_parameters},
+          {"vtu",
+           {Field::body},
+           body_writer<VtuSnapshots>,
+           declare_snapshot_parameters},
+          {"hdf5",
+           {Field::body},
+           body_writer<Hdf5Snapshots>,
+           declare_snapshot_parameters}};
         return list;
       }
 
@@ -118,6 +133,23 @@ namespace rsfcycle
         return std::find(list.begin(), list.end(), name) != list.end();
       }
     } // namespace
+
+
+    void
+    declare_parameters(dealii::ParameterHandler &prm)
+    {
+      // a function shared by several writers (the snapshots') declares once
+      std::vector<void (*)(dealii::ParameterHandler &)> done;
+      prm.enter_subsection("Output");
+      for (const auto &type : writer_types())
+        if (type.declare &&
+            std::find(done.begin(), done.end(), type.declare) == done.end())
+          {
+            type.declare(prm);
+            done.push_back(type.declare);
+          }
+      prm.leave_subsection();
+    }
 
 
     std::string

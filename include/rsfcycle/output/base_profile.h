@@ -24,6 +24,13 @@ namespace rsfcycle
                   const Layout           &layout,
                   const OutputParameters &output);
 
+      /**
+       * Its entries in subsection Output (entered by the caller): Profile
+       * interval and Event profile interval (OutputParameters reads them).
+       */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
       std::string
       name() const override
       {

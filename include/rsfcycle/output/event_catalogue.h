@@ -2,6 +2,7 @@
 #ifndef rsfcycle_output_event_catalogue_h
 #define rsfcycle_output_event_catalogue_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <rsfcycle/output/csv_file.h>
 
 namespace rsfcycle
@@ -20,6 +21,27 @@ namespace rsfcycle
         : CsvFile(dir, "events.csv")
         , three_d(three_d)
       {}
+
+      /**
+       * Its entries in subsection Output (entered by the caller): the
+       * summary's Transition time and Transition events (OutputParameters
+       * reads them).
+       */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm)
+      {
+        prm.declare_entry("Transition time",
+                          "0",
+                          dealii::Patterns::Double(0),
+                          "Events starting before this time belong to the "
+                          "initial transition and are left out of the "
+                          "summary [s]");
+        prm.declare_entry("Transition events",
+                          "2",
+                          dealii::Patterns::Integer(0),
+                          "The first this many events are left out of the "
+                          "summary as well [-]");
+      }
 
       std::string
       name() const override

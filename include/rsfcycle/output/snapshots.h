@@ -43,6 +43,15 @@ namespace rsfcycle
 
 
     /**
+     * The snapshots' entries in subsection Output (entered by the caller),
+     * shared by every format: Output interval and Event output interval
+     * (OutputParameters reads them).
+     */
+    void
+    declare_snapshot_parameters(dealii::ParameterHandler &prm);
+
+
+    /**
      * Snapshots of the body (displacement, velocity, material, MPI rank and
      * the friction fields on the base) and of the fault (the contact faces:
      * slip rate, state, slip, stresses), at t = 0, every `Output/Output

@@ -47,6 +47,13 @@ namespace rsfcycle
     writer_names();
 
     /**
+     * Every writer's own entries, each declared once in subsection Output
+     * (each writer type names its declaring function in the list).
+     */
+    void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
      * Refuse, in one line naming the entry, a writer the list does not know,
      * a writer that needs a field the model does not offer, `seas` without
      * `Output/SEAS/Benchmark` (or `Problem`) and those without `seas`.

@@ -450,17 +450,19 @@ namespace rsfcycle
         }
       if (!(least > 0))
         {
-          std::string where;
-          for (unsigned int d = 0; d < dim; ++d)
-            where +=
-              (d == 0 ? "(" : ", ") + format_number(all_positions[weakest][d]);
+          // in 2D the place along the contact; in 3D the node's position
+          const Point<dim> &node = all_positions[weakest];
+          std::string where = format_number(scene.along_base_coordinate(node)) +
+                              " m along the contact";
+          if (dim == 3)
+            where = "(x, y, z) = (" + format_number(node[0]) + ", " +
+                    format_number(node[1]) + ", " +
+                    format_number(node[dim - 1]) + ") m";
           throw time::CompressionLost(
             "at t = " + format_number(t) +
-            " s the pore pressure left the fault node at (x, y" +
-            (dim == 3 ? ", z" : "") + ") = " + where +
-            ") m without compression: " + "sigma_n - p = " +
-            format_number(least) + " Pa (p = " +
-            format_number(pore_pressure(all_positions[weakest], t)) +
+            " s the pore pressure left the fault node at " + where +
+            " without compression: sigma_n - p = " + format_number(least) +
+            " Pa (p = " + format_number(pore_pressure(node, t)) +
             " Pa); rate-and-state friction needs sigma_n - p > 0");
         }
     }

@@ -220,6 +220,7 @@ namespace rsfcycle
     LinearCorrection linear_correction          = LinearCorrection::multigrid;
     bool             direct_fallback            = false;
     unsigned int     smoothing_steps            = 3;
+    unsigned int     coarse_reuse_size          = 10000;
     unsigned int     correction_cycles          = 1;
     double           correction_tolerance       = 1e-2;
     double           tnnmg_tolerance            = 1e-10;

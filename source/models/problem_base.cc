@@ -91,8 +91,9 @@ namespace rsfcycle
           return time::step_coefficients(scheme, tau, inertia);
         };
       typename MG::Settings settings;
-      settings.smoothing_steps = solver.smoothing_steps;
-      settings.control         = control;
+      settings.smoothing_steps   = solver.smoothing_steps;
+      settings.coarse_reuse_size = solver.coarse_reuse_size;
+      settings.control           = control;
       return std::make_unique<MG>(discretisation.dof_handler,
                                   dirichlet,
                                   boundary_id::contact,

@@ -4,7 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <rsfcycle/solvers/coarse_direct.h>
 #include <stdexcept>
-#include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace rsfcycle
@@ -18,35 +18,57 @@ namespace rsfcycle
                              const unsigned int     n_dofs,
                              const MPI_Comm         communicator)
     {
-      // (row, column, value) of the rank's rows, then of all ranks
-      std::vector<std::tuple<unsigned int, unsigned int, double>> entries;
+      // (row, column, value) of the rank's rows, then of all ranks (plain
+      // MPI_Allgatherv: the coarse matrix of a 3D mesh has millions of
+      // entries, too many to serialise)
+      std::vector<unsigned int> rows, columns;
+      std::vector<double>       values;
       for (unsigned int row = 0; row < coarse.m(); ++row)
         for (unsigned int j = coarse.row_begin(row); j < coarse.row_end(row);
              ++j)
-          entries.emplace_back(coarse.global_column(row),
-                               coarse.global_column(coarse.column(j)),
-                               coarse.value(j));
+          {
+            rows.push_back(coarse.global_column(row));
+            columns.push_back(coarse.global_column(coarse.column(j)));
+            values.push_back(coarse.value(j));
+          }
       if (Utilities::MPI::n_mpi_processes(communicator) > 1)
         {
-          const auto parts = Utilities::MPI::all_gather(communicator, entries);
-          entries.clear();
-          for (const auto &part : parts)
-            entries.insert(entries.end(), part.begin(), part.end());
+          const auto counts =
+            Utilities::MPI::all_gather(communicator,
+                                       static_cast<int>(rows.size()));
+          std::vector<int> offsets(counts.size() + 1, 0);
+          for (unsigned int r = 0; r < counts.size(); ++r)
+            offsets[r + 1] = offsets[r] + counts[r];
+          const auto gather = [&](auto &local, MPI_Datatype type) {
+            std::remove_reference_t<decltype(local)> all(offsets.back());
+            MPI_Allgatherv(local.data(),
+                           local.size(),
+                           type,
+                           all.data(),
+                           counts.data(),
+                           offsets.data(),
+                           type,
+                           communicator);
+            local.swap(all);
+          };
+          gather(rows, MPI_UNSIGNED);
+          gather(columns, MPI_UNSIGNED);
+          gather(values, MPI_DOUBLE);
         }
 
       if (pattern.n_rows() != n_dofs || matrix.n_nonzero_elements() == 0 ||
           !use_cholesky)
         {
           DynamicSparsityPattern dsp(n_dofs);
-          for (const auto &[row, column, value] : entries)
-            dsp.add(row, column);
+          for (std::size_t k = 0; k < rows.size(); ++k)
+            dsp.add(rows[k], columns[k]);
           matrix.clear();
           pattern.copy_from(dsp);
           matrix.reinit(pattern);
         }
       matrix = 0;
-      for (const auto &[row, column, value] : entries)
-        matrix.add(row, column, value);
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        matrix.add(rows[k], columns[k], values[k]);
 
       use_cholesky = true;
       try

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 #include <algorithm>
+#include <cmath>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -37,10 +38,16 @@ namespace rsfcycle
       /** Original diagonal blocks of the contact blocks, by level. */
       std::vector<std::vector<std::array<double, 4>>> original;
 
-      CoarseDirect           coarse;
-      mg::Matrix<la::Vector> mg_matrix;
-      mg::Matrix<la::Vector> mg_interface_up;
-      mg::Matrix<la::Vector> mg_interface_down;
+      CoarseDirect coarse;
+      /**
+       * The diagonal entries of the level-0 contact blocks that `coarse`
+       * was factorised with (empty before the first factorisation).
+       */
+      std::vector<std::array<double, 2>> factorised_diagonal;
+      bool                               factorised = false;
+      mg::Matrix<la::Vector>             mg_matrix;
+      mg::Matrix<la::Vector>             mg_interface_up;
+      mg::Matrix<la::Vector>             mg_interface_down;
       /** Forward Gauss-Seidel before, backward after: the V-cycle is
        * symmetric (needed by CG; alternating sweeps with an odd count of
        * them would not be). */
@@ -365,10 +372,42 @@ namespace rsfcycle
                     d[n * i + j] + block.scale * data[1 + n * i + j];
           }
 
-      // the coarse matrix, whole on every rank
-      ops.coarse.initialize(ops.local_matrices[0],
-                            dof_handler.n_dofs(0),
-                            communicator);
+      // The coarse matrix, whole on every rank. A large one (Coarse factor
+      // reuse size) is factorised again only when a contact block's
+      // diagonal moved by more than half of the value
+      // the factor holds: the coarse solve is a preconditioner, and a
+      // factor whose contact blocks are within that ratio of the current
+      // ones is spectrally equivalent to the current coarse matrix (the
+      // contact blocks are a block-diagonal, positive semi-definite
+      // addition). Truncation (a factor 1 + 1e8) or a new step matrix
+      // always refactorises; the friction Hessians of successive TNNMG
+      // iterations and fixed-point iterations usually do not.
+      const std::vector<LevelContactBlock> &coarse_blocks = contact_blocks[0];
+      bool                                  refactorise =
+        !ops.factorised || dof_handler.n_dofs(0) < settings.coarse_reuse_size;
+      for (unsigned int b = 0; b < coarse_blocks.size() && !refactorise; ++b)
+        for (unsigned int i = 0; i < coarse_blocks[b].n_dofs; ++i)
+          {
+            const unsigned int dof  = coarse_blocks[b].dofs[i];
+            const double       now  = ops.local_matrices[0].el(dof, dof);
+            const double       then = ops.factorised_diagonal[b][i];
+            if (std::abs(now - then) > coarse_refresh_ratio * std::abs(then))
+              refactorise = true;
+          }
+      if (Utilities::MPI::logical_or(refactorise, communicator))
+        {
+          ops.coarse.initialize(ops.local_matrices[0],
+                                dof_handler.n_dofs(0),
+                                communicator);
+          ops.factorised = true;
+          ops.factorised_diagonal.assign(coarse_blocks.size(), {});
+          for (unsigned int b = 0; b < coarse_blocks.size(); ++b)
+            for (unsigned int i = 0; i < coarse_blocks[b].n_dofs; ++i)
+              ops.factorised_diagonal[b][i] =
+                ops.local_matrices[0].el(coarse_blocks[b].dofs[i],
+                                         coarse_blocks[b].dofs[i]);
+          ++n_coarse_factorisations;
+        }
     }
 
 

@@ -20,11 +20,13 @@ namespace rsfcycle
      * coarse matrix (the rank's rows of a la::LocalMatrix) is gathered onto
      * every rank as a sparse matrix and factorised there by CHOLMOD (the
      * coarse mesh does not grow with the number of ranks); the right-hand
-     * side is summed onto every rank in each solve. The matrix changes in
-     * every TNNMG iteration (the contact nodes' friction Hessians), so the
-     * factorisation must be cheap: a sparse Cholesky factorisation of a 2D
-     * coarse mesh of a few hundred vertices takes about a millisecond,
-     * where a dense Householder QR would grow as n^3. A matrix that CHOLMOD
+     * side is summed onto every rank in each solve. The contact nodes'
+     * friction Hessians change the matrix in every TNNMG iteration; the
+     * multigrid correction factorises it again only when they moved far
+     * from the factorised ones (MultigridCorrection), since a 3D coarse
+     * mesh of ten thousand vertices takes about a second to factorise. A
+     * sparse Cholesky factorisation is used, where a dense Householder QR
+     * would grow as n^3; a matrix that CHOLMOD
      * does not accept as positive definite falls back to Householder least
      * squares.
      */

@@ -99,7 +99,11 @@ namespace rsfcycle
 
       struct Settings
       {
-        unsigned int            smoothing_steps = 3;
+        unsigned int smoothing_steps = 3;
+        /** Coarse levels of at least this many dofs keep their factor
+         * while the contact blocks stay close (`Coarse factor reuse
+         * size`). */
+        unsigned int            coarse_reuse_size = 10000;
         LinearCorrectionControl control;
       };
 
@@ -124,6 +128,13 @@ namespace rsfcycle
       /** Number of levels and dofs per level (for logs). */
       std::vector<dealii::types::global_dof_index>
       level_sizes() const;
+
+      /** The coarse level's factorisations so far (for logs and tests). */
+      unsigned int
+      coarse_factorisations() const
+      {
+        return n_coarse_factorisations;
+      }
 
     private:
       struct LevelOperators;
@@ -165,6 +176,14 @@ namespace rsfcycle
        * block, gathered per solve.
        */
       std::vector<std::array<double, 5>> node_data, own_data;
+
+      /**
+       * A coarse factor is kept while every level-0 contact block's
+       * diagonal is within this fraction of the value it was factorised
+       * with.
+       */
+      static constexpr double coarse_refresh_ratio    = 0.5;
+      unsigned int            n_coarse_factorisations = 0;
 
       std::vector<std::unique_ptr<LevelOperators>> cache;
       ProjectedCG                                  cg;

@@ -177,8 +177,6 @@ FD_KINDS = {"fd": ("prm/seas-bp5-fd.prm", "fd-{}", {"End time": FD_END}),
             "qd": ("prm/seas-bp5-qd.prm", "qd-first-{}",
                    {"Output/Event merge time": MERGE})}
 CELL_TEXT = {"2km": "2 km", "1km": "1 km"}
-# the machine ran other engineers' single-core jobs beside these runs
-FD_LOAD = "shared"
 
 
 def fd(args):
@@ -337,13 +335,14 @@ def correction_row(key, where, e):
 def fd_context(folder):
     """(context, cores) of an fd run for results.record: the commit of the
     binary (log.txt's first line; the runs of one binary may span several
-    commits of the tree), the day, the load FD_LOAD."""
+    commits of the tree), the day and the load when the run started
+    (run-context.json)."""
     context, cores = hbi.context_of(folder)
     words = run_folder.version(folder).replace(",", " ").split()
     if "commit" in words:
         commit = words[words.index("commit") + 1]
         context["commit"] = commit[:7] + ("-dirty" if commit.endswith("-dirty") else "")
-    return dict(context, load=FD_LOAD), cores
+    return context, cores
 
 
 def fd_results(args):
@@ -398,8 +397,7 @@ def fd_results(args):
         ]
         if e["wall"]:
             rows.append((key + "cost", hbi.duration(e["wall"]), "", f"{where}: the whole "
-                         f"run to t = {FD_END:.0f} s on 2 ranks, the machine shared with "
-                         "other jobs"))
+                         f"run to t = {FD_END:.0f} s on 2 ranks"))
         if e["wall_to_end"]:
             rows.append((key + "cost_event", hbi.duration(e["wall_to_end"]), "",
                          f"{where}: wall time from the start to the event's end "

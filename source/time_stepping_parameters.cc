@@ -31,9 +31,10 @@ namespace rsfcycle
       "dynamic, inviscid materials: the Explicit scheme with the lumped "
       "mass, the friction solved node by node), every step Courant number "
       "x the mesh's stable step (shown in the log); implicit-explicit: "
-      "implicit while the step the Controller allows is at least 16 "
-      "explicit steps, explicit while it is shorter (inside events), back "
-      "when a trial of up to 32 implicit steps reaches 32 explicit steps "
+      "implicit while the step the Controller allows is at least R "
+      "explicit steps (Explicit steps per implicit step), explicit while it "
+      "is shorter (inside events), back when a trial of up to 32 implicit "
+      "steps reaches 2 R explicit steps "
       "(doc/model.md 8.3a; a model without an explicit step keeps the "
       "implicit one and says so in the log)");
     prm.declare_entry(
@@ -46,6 +47,19 @@ namespace rsfcycle
       "mass's inverse times the stiffness bounded from above cell by cell; "
       "a rupture front wants a few steps per cell, and the peak slip rate "
       "converges as the step falls below half the stable one) [-]");
+    prm.declare_entry(
+      "Explicit steps per implicit step",
+      "16",
+      Double(1, 1e6),
+      "With Integrator = implicit-explicit: R, the explicit steps one "
+      "implicit step must stand for before the run takes implicit steps "
+      "(their error-controlled step at least R explicit steps; a trial "
+      "succeeds at 2 R). Set it to about the cost of an implicit step over "
+      "that of an explicit one: an implicit step solves the whole body a "
+      "few times (tens of multigrid cycles), an explicit step applies the "
+      "stiffness twice. 16 suits 2D meshes; a 3D mesh whose coarse "
+      "multigrid level is large needs more (the timer table's TNNMG and "
+      "Explicit step sections give the ratio) [-]");
     prm.declare_entry(
       "Explicit scheme",
       "noh-bathe",
@@ -153,6 +167,7 @@ namespace rsfcycle
     minimum_step       = prm.get_double("Minimum step");
     maximum_step       = prm.get_double("Maximum step");
     courant_number     = prm.get_double("Courant number");
+    implicit_ratio     = prm.get_double("Explicit steps per implicit step");
     explicit_scheme = Choice<ExplicitScheme>::parse(prm.get("Explicit scheme"));
     prm.leave_subsection();
   }

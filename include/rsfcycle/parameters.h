@@ -137,6 +137,9 @@ namespace rsfcycle
     double    maximum_step       = 100;
     /** The explicit step as a fraction of the stable step [-]. */
     double courant_number = 0.5;
+    /** R of the implicit-explicit switch (Explicit steps per implicit
+     * step). */
+    double implicit_ratio = 16;
     /** The explicit step's scheme (models::ExplicitStep). */
     enum class ExplicitScheme
     {

@@ -20,12 +20,13 @@ namespace rsfcycle
     /**
      * `Time stepping/Integrator = implicit-explicit`: the model's implicit
      * step under the step-size control of `Controller` while the step it
-     * allows is at least R = 16 explicit steps (`Courant number` x the
-     * stable step, tau_e), the model's explicit step while it is not. An
-     * implicit step solves the whole body (tens of multigrid cycles, each
-     * some stiffness products), an explicit one applies the stiffness once:
-     * R is the least number of explicit steps an implicit step must stand
-     * for. Both take the same state, so a change costs nothing.
+     * allows is at least R explicit steps (`Courant number` x the
+     * stable step, tau_e; R = `Explicit steps per implicit step`, 16 by
+     * default), the model's explicit step while it is not. An implicit step
+     * solves the whole body (tens of multigrid cycles, each some stiffness
+     * products), an explicit one applies the stiffness twice: R is the
+     * least number of explicit steps an implicit step must stand for. Both take
+     * the same state, so a change costs nothing.
      *
      * The way back is a trial: after 256 explicit steps the run takes up to
      * 32 implicit steps under the control, started at 2 R tau_e, each with
@@ -56,6 +57,7 @@ namespace rsfcycle
                 ImplicitModel<State>         &implicit_model,
                 ExplicitModel<State>         &explicit_model)
         : ts(ts)
+        , ratio(ts.implicit_ratio)
         , implicit_model(implicit_model)
         , explicit_model(explicit_model)
         , refusal(explicit_model.explicit_refusal())
@@ -238,8 +240,6 @@ namespace rsfcycle
         countdown = interval;
       }
 
-      /** R: the explicit steps an implicit step must stand for. */
-      static constexpr double       ratio          = 16;
       static constexpr unsigned int first_interval = 256;
       static constexpr unsigned int last_interval  = 4096;
       /** The implicit steps of a trial at most. */
@@ -253,7 +253,9 @@ namespace rsfcycle
       /** The values of memory() before the implicit control's. */
       static constexpr unsigned int n_values = 4;
 
-      const TimeSteppingParameters      &ts;
+      const TimeSteppingParameters &ts;
+      /** R: the explicit steps an implicit step must stand for. */
+      const double                       ratio;
       ImplicitModel<State>              &implicit_model;
       ExplicitModel<State>              &explicit_model;
       const std::string                  refusal;

@@ -40,7 +40,7 @@ import resource
 import subprocess
 import sys
 
-from rsfcycle import bench, run as run_folder, seas
+from rsfcycle import bench, results as results_file, run as run_folder, seas
 from rsfcycle.peers import hbi
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -295,12 +295,21 @@ def hour_rows(folder, cells):
     e = first_event(folder)
     switch = re.search(r"implicit steps from t = ([0-9.e+-]+) s", text)
     stop = re.search(r"Stopped by signal \d+ at t = ([0-9.e+-]+) s", text)
+    end = re.search(r"Stop after events = \d+ reached: the run ends at t = ([0-9.e+-]+) s",
+                    text)
     key = f"fd.hour.{cells}."
     rows = []
     if stop:
         rows.append((key + "stopped", f"{float(stop.group(1)):.0f}", "s", f"{where}: "
                      "the run with the hour-long merge window, stopped by SIGTERM at "
                      f"this time (the event ended at {e['end']:.0f} s)"))
+    if end:
+        rows.append((key + "end", f"{float(end.group(1)):.0f}", "s", f"{where}: the "
+                     "run with the hour-long merge window ends itself (Stop after events "
+                     f"= 1) at this time, an hour after the event's end ({e['end']:.0f} s)"))
+        if e["wall"]:
+            rows.append((key + "cost", hbi.duration(e["wall"]), "", f"{where}: the "
+                         "whole run with the hour-long merge window on 2 ranks"))
     if e["explicit_wall"] and e["explicit"]:
         ratio = e["explicit_wall"] / (e["explicit"] * e["explicit_step"])
         rows.append((key + "explicit", f"{ratio:.2f}",
@@ -315,7 +324,7 @@ def hour_rows(folder, cells):
                      f"steps, {2 * 16 * e['explicit_step']:.3g} s)"))
         if len(after) > 1 and after[-1][0] > after[0][0]:
             (ta, wa), (tb, wb) = after[0], after[-1]
-            rows.append((key + "implicit", f"{(wb - wa) / (tb - ta):.1f}", "x",
+            rows.append((key + "implicit", f"{(wb - wa) / (tb - ta):.2g}", "x",
                          f"{where}: wall time over simulated time in the implicit "
                          f"steps after the switch ({tb - ta:.0f} s took {wb - wa:.0f} s)"))
     if e["corrections"] and e["wall"]:
@@ -433,6 +442,11 @@ def fd_results(args):
     for cells in FD_CELLS:
         folder = os.path.join(args.work, f"fd-{cells}-hour")
         if os.path.exists(os.path.join(folder, "log.txt")):
+            # the rows of an earlier hour run (stopped or not) go
+            path = os.path.join(HERE, "results.csv")
+            kept = {k: r for k, r in results_file.read_results(path).items()
+                    if not k.startswith(f"fd.hour.{cells}.")}
+            results_file.write_results(path, kept.values())
             hbi.record(HERE, hour_rows(folder, cells), *fd_context(folder))
     if ("fd", "2km") in first and ("fd", "1km") in first:
         a, b = first["fd", "1km"], first["fd", "2km"]
@@ -456,6 +470,24 @@ def fd_results(args):
                  f"QD, 1 km against 2 km, surface slip, {c['slip']:.3f} against "
                  f"{d['slip']:.3f} m"),
             ]
+        # README.md's SEAS table: BP5-FD's row
+        rows += [
+            ("bp5-fd.cells", "1", "km", "fault cells (the shipped file; 2 km beside it)"),
+            ("bp5-fd.events", "the first", "", "events run (Stop after events = 1, End "
+             f"time = {FD_END:.0f} s)"),
+            ("bp5-fd.peer", "none; BP5-QD's first event", "", "no peer run: the first "
+             "event against BP5-QD's at the same cells, and 1 km against 2 km"),
+            ("bp5-fd.recurrence", "first event only; Mw "
+             f"{a['mw'] - first['qd', '1km']['mw']:+.3f} from QD"
+             if ("qd", "1km") in first else "first event only", "",
+             "FD - QD at 1 km, the first event's Mw"),
+            ("bp5-fd.peak_slip_rate", f"no peer; {a['peak']:.2f} m/s at 1 km "
+             f"({pct(a['peak'] / b['peak'] - 1, 1).replace('-', '−')} % from 2 km)", "",
+             "the first event's peak slip rate at 1 km and its change from 2 km"),
+        ]
+        if a["wall"]:
+            rows.append(("bp5-fd.cost", f"{hbi.duration(a['wall'])} to {FD_END:.0f} s",
+                         "", f"the 1 km run to t = {FD_END:.0f} s on 2 ranks"))
         hbi.record(HERE, rows, context, cores)
 
 
@@ -473,7 +505,7 @@ def fd_options(p):
     p.add_argument("--ranks", type=int, default=2)
     p.add_argument("--hour", action="store_true", help="FD without End time, "
                    "the event merge window's hour after the event included, into "
-                   "fd-CELLS-hour (hours: stop it with SIGTERM, which ends the run "
+                   "fd-CELLS-hour (about 5 min at 2 km on 2 ranks: the run ends itself an hour "
                    "with a checkpoint and the timer table)")
 
 

@@ -112,6 +112,8 @@ RUNS = {
     "bp1-fd-ie3": ("seas-bp1-fd.prm", dict(FD3, **IE),
                    "BP1-FD to its third event, implicit-explicit (lumped "
                    "mass, Courant number 0.5)", "bp1-fd.ie3.cost"),
+    "bp1-fd-ie-25m": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
+        "Mesh/Local refinements": 6}), "the same at 25 m", ""),
     "bp1-fd-ie-c025": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Time stepping/Courant number": 0.25}),
         "the same, Courant number 0.25", ""),
@@ -547,7 +549,8 @@ def results_fd_ie(work, record):
     (SCycle's are in the rows bp1-fd.*) and its cost against the implicit
     step's (bp1-fd-wp-1e-5, the same first event)."""
     for name, label in (("bp1-fd-ie", "Courant number 0.5"),
-                        ("bp1-fd-ie-c025", "Courant number 0.25")):
+                        ("bp1-fd-ie-c025", "Courant number 0.25"),
+                        ("bp1-fd-ie-25m", "25 m, Courant number 0.5")):
         found = load(work, [(name, label)], name)
         if not found:
             continue

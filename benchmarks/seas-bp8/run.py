@@ -32,7 +32,8 @@ From the repository's root, with the package on the path:
                       x and z at +-6400 m; box-xz500-y500, box-xz1500-y500,
                       box-xz500-y2000: EQquasi's boxes (x and z faces
                       traction free at +-Lxz, rigid walls at y = +-Ly)
-             cost     gs-10m-2ranks: gs-10m on 2 MPI ranks
+             cost     gs-10m-2ranks, pw-10m-2ranks: gs-10m and pw-10m on 2
+                      MPI ranks
            The meshes of the domain study are made with gmsh from
            prm/meshes/seas-bp5.geo into WORK/meshes.
   results  the figures of the run folders present into results.csv
@@ -105,6 +106,7 @@ def run_list():
     for lxz, ly in ((500, 500), (1500, 500), (500, 2000)):
         runs[f"box-xz{lxz}-y{ly}"] = ("gs", "20m", {}, 1, "domain", (lxz, ly, "rigid"))
     runs["gs-10m-2ranks"] = ("gs", "10m", {}, 2, "cost", None)
+    runs["pw-10m-2ranks"] = ("pw", "10m", {"End time": PW_END}, 2, "cost", None)
     return runs
 
 
@@ -510,6 +512,15 @@ def results_(args):
             ("cost.gs10_2ranks_operator", f"{operator:.0f}", "s", "GS, 10 m, 2 ranks: the "
              "Green's functions"),
             ("cost.gs10_2ranks_loop", f"{loop:.0f}", "s", "GS, 10 m, 2 ranks: the time loop"),
+        ], *context(folder))
+    if have("pw-10m-2ranks"):
+        folder = found["pw-10m-2ranks"]
+        wall, loop, operator = hbi.rsfcycle_times(folder)
+        hbi.record(HERE, [
+            ("cost.pw10_2ranks", hbi.duration(wall), "", "PW, 10 m, the first hour on 2 "
+             "ranks, the whole run"),
+            ("cost.pw10_2ranks_operator", f"{operator:.0f}", "s", "PW, 10 m, 2 ranks: the "
+             "Green's functions"),
         ], *context(folder))
 
     # the SEAS table's rows

@@ -503,25 +503,18 @@ def results_(args):
         hbi.record(HERE, domain, *context(found.get("gs-20m") or first))
 
     # cost on 2 ranks against one
-    if have("gs-10m-2ranks"):
-        folder = found["gs-10m-2ranks"]
-        wall, loop, operator = hbi.rsfcycle_times(folder)
+    for variant, span in (("gs", "30 days"), ("pw", "the first hour")):
+        name = f"{variant}-10m-2ranks"
+        if not have(name):
+            continue
+        wall, loop, operator = hbi.rsfcycle_times(found[name])
+        key, what = f"cost.{variant}10_2ranks", f"{variant.upper()}, 10 m"
         hbi.record(HERE, [
-            ("cost.gs10_2ranks", hbi.duration(wall), "", "GS, 10 m, 30 days on 2 ranks, "
-             "the whole run"),
-            ("cost.gs10_2ranks_operator", f"{operator:.0f}", "s", "GS, 10 m, 2 ranks: the "
-             "Green's functions"),
-            ("cost.gs10_2ranks_loop", f"{loop:.0f}", "s", "GS, 10 m, 2 ranks: the time loop"),
-        ], *context(folder))
-    if have("pw-10m-2ranks"):
-        folder = found["pw-10m-2ranks"]
-        wall, loop, operator = hbi.rsfcycle_times(folder)
-        hbi.record(HERE, [
-            ("cost.pw10_2ranks", hbi.duration(wall), "", "PW, 10 m, the first hour on 2 "
-             "ranks, the whole run"),
-            ("cost.pw10_2ranks_operator", f"{operator:.0f}", "s", "PW, 10 m, 2 ranks: the "
-             "Green's functions"),
-        ], *context(folder))
+            (key, hbi.duration(wall), "", f"{what}, {span} on 2 ranks, the whole run"),
+            (key + "_operator", f"{operator:.0f}", "s",
+             f"{what}, 2 ranks: the Green's functions"),
+            (key + "_loop", f"{loop:.0f}", "s", f"{what}, 2 ranks: the time loop"),
+        ], *context(found[name]))
 
     # the SEAS table's rows
     if have("gs-10m"):

@@ -19,6 +19,11 @@ From the repository's root, with the package on the path:
            folders against time, into figures/
   results  the README's rows of results.csv from an rsfcycle run and the
            peers' (rsfcycle.results.record); --dry-run prints them
+  equal    the cost at equal accuracy: rsfcycle at its shipped step
+           tolerance and 3 and 10 times looser (one rank), HBI at eps_r
+           1e-6, 1e-5, 1e-4 (one core), side by side with --run into
+           WORK/equal; each code's loosest run whose catalogue is unchanged
+           (rsfcycle.equal), the ratio of the costs into results.csv
   tandem   run tandem on BP3-QD (tandem/run.sh: builds it under
            TANDEM_PREFIX once, about 25 min, then meshes, runs, converts)
 
@@ -44,6 +49,7 @@ import sys
 import numpy as np
 
 from rsfcycle import bench, catalog, prm, results, run, seas
+from rsfcycle.equal import hbi_command as hbi_equal
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -509,6 +515,14 @@ def tandem_command(args):
 
 # -------------------------------------------------------------------- main
 
+def equal_command(args):
+    """The cost at equal accuracy against HBI: the shipped 60° thrust run
+    (prm/seas-bp3-qd.prm, 1500 years at 25 m) and HBI's, each at its
+    loosest tolerance whose catalogue is unchanged (rsfcycle.equal)."""
+    return hbi_equal(args, HERE, "bp3", "prm/seas-bp3-qd.prm", "1e-5",
+                     lambda folder: Run("", folder).events)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="PYTHONPATH=python /usr/bin/python3 benchmarks/seas-bp3/run.py",
@@ -587,6 +601,18 @@ def main(argv=None):
     p.add_argument("--dry-run", action="store_true",
                    help="print the rows, write nothing")
     p.set_defaults(handler=results_command)
+
+    p = sub.add_parser("equal", help="the cost at equal accuracy against "
+                       "HBI (each code at its loosest tolerance)")
+    p.add_argument("--work", default=os.path.join(HERE, "runs"),
+                   help="default benchmarks/seas-bp3/runs (git-ignored)")
+    p.add_argument("--run", action="store_true", help="run the sweeps' "
+                   "missing runs first (both codes side by side, one core each)")
+    p.add_argument("--binary", help="rsfcycle (default build/rsfcycle)")
+    p.add_argument("--hbi-src", help="HBI's clone (default $HBI_SRC)")
+    p.add_argument("--prefix", help="where HBI is built (SRC/rsfcycle-builds)")
+    p.add_argument("--nice", type=int, default=0)
+    p.set_defaults(handler=equal_command)
 
     p = sub.add_parser("tandem", help="run tandem (tandem/run.sh): "
                        "TANDEM_PREFIX or --prefix")

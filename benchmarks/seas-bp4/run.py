@@ -30,6 +30,8 @@ from rsfcycle.peers import hbi
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STATION = "fltst_strk+000dp+000"
+# `equal`: the shipped file, its step tolerance, the station, the merge [s]
+EQUAL = ("prm/seas-bp4-qd.prm", "1e-5", STATION, 3600.0)
 
 
 def runs(args):
@@ -90,7 +92,7 @@ def results(args):
 
 def main(argv=None):
     return hbi.driver(__doc__, HERE, "bp4", dict(
-        runs=runs, peer=None, figures=figures, results=results), argv=argv)
+        runs=runs, peer=None, figures=figures, results=results), argv=argv, equal=EQUAL)
 
 
 if __name__ == "__main__":

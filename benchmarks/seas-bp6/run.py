@@ -16,6 +16,12 @@ From the repository's root, with the package on the path:
   figures  figures/bp6-qd-a.png and bp6-qd-s.png from those folders
   results  stations, slip fronts and maximum slip rates of both codes and
            their differences into results.csv (rsfcycle.results.record)
+  equal    the cost at equal accuracy: rsfcycle at its shipped step
+           tolerance and 3 and 10 times looser (one rank), HBI at eps_r
+           1e-6, 1e-5, 1e-4 (one core), side by side with --run into
+           WORK/equal, per law; each code's loosest run whose slip fronts,
+           slips and peak slip rate are unchanged (within 0.01 %,
+           rsfcycle.equal), the ratio of the costs into results.csv
 
 WORK is --work (default benchmarks/seas-bp6/runs). Days of 86400 s, a
 year of 365.25 days; the slip front is the largest |x3| where the slip
@@ -28,6 +34,7 @@ import sys
 import numpy as np
 
 from rsfcycle import catalog, seas, seas_rules
+from rsfcycle.equal import hbi_command as hbi_equal, unchanged_values
 from rsfcycle.peers import hbi
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -185,6 +192,22 @@ def results(args):
                                f"HBI {what}, CPU time")], *hbi.context_of(peer_folder))
 
 
+def compared(folder):
+    """What `equal` keeps unchanged: the slip fronts, the slips after two
+    years at the stations 0 … 7.5 km and the fault's peak slip rate."""
+    s = summary(folder)
+    east = [n for n in seas_rules.BP6_STATIONS if not n.endswith("-15")]
+    return s["fronts"] + [s["stations"][n]["slip"][3] for n in east] + [s["peak"][0]]
+
+
+def equal(args):
+    """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
+    for law in args.laws:
+        hbi_equal(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6", compared,
+                  label=law.lower(), hbi_options=dict(law=law),
+                  compare=lambda a, b: unchanged_values(a, b, within=1e-4))
+
+
 def laws(p):
     p.add_argument("--laws", nargs="+", choices=["A", "S"], default=["A", "S"])
 
@@ -196,8 +219,8 @@ def ranks(p):
 
 def main(argv=None):
     return hbi.driver(__doc__, HERE, "bp6", dict(
-        runs=runs, peer=peer, figures=figures, results=results),
-        dict(runs=ranks, figures=laws, results=laws), argv=argv)
+        runs=runs, peer=peer, figures=figures, results=results, equal=equal),
+        dict(runs=ranks, figures=laws, results=laws, equal=laws), argv=argv)
 
 
 if __name__ == "__main__":

@@ -31,6 +31,8 @@ from rsfcycle.peers import hbi
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STATION = "fltst_strk+000dp+000"
+# `equal`: the shipped file, its step tolerance, the station, the merge [s]
+EQUAL = ("prm/seas-bp7-qd.prm", "1e-5", STATION, 100.0)
 NAMES = ("rsfcycle-10m", "hbi-10m", "hbi-5m", "hbi-10m-eps8")
 # results.csv's rows against HBI at 10 m: key, figure (hbi.FIGURES), text
 COMPARED = """
@@ -117,7 +119,7 @@ def results(args):
 
 def main(argv=None):
     return hbi.driver(__doc__, HERE, "bp7", dict(
-        runs=runs, peer=None, figures=figures, results=results), argv=argv)
+        runs=runs, peer=None, figures=figures, results=results), argv=argv, equal=EQUAL)
 
 
 if __name__ == "__main__":

@@ -1313,18 +1313,42 @@ def record(folder, rows, context, cores):
         print(f"{key}: {value} {unit}  ({description})")
 
 
-def driver(doc, here, benchmark, commands, extra=None, argv=None):
+EQUAL_HELP = """
+  equal    the cost at equal accuracy: rsfcycle at its shipped step
+           tolerance and 3 and 10 times looser (one rank), HBI at eps_r
+           1e-6, 1e-5, 1e-4 (one core), side by side with --run into
+           WORK/equal; each code's loosest run whose catalogue is
+           unchanged (rsfcycle.equal), the ratio of the costs into
+           results.csv"""
+
+
+def driver(doc, here, benchmark, commands, extra=None, argv=None, equal=None):
     """The command line of a benchmark's driver: `commands` maps a name to
     its handler (its docstring's first line is the help; `peer` None:
     peer(benchmark, args)), `extra` a name to a function that adds that
     command's own arguments. Every command gets --work (default
     HERE/runs); `runs` gets --binary and --ranks, `peer` HBI's options
-    (--hbi-src, --prefix, --nice, --name, the benchmark's run options). A
-    missing HBI, build or run folder ends with one line and exit status 2."""
+    (--hbi-src, --prefix, --nice, --name, the benchmark's run options).
+    `equal` (base .prm, shipped tolerance, station, merge [s]) adds the
+    command `equal` (rsfcycle.equal.hbi_command on catalogue()). A missing HBI,
+    build or run folder ends with one line and exit status 2."""
     name = os.path.basename(here)
+    description, epilog = doc.split("\n\n")[0], doc.split("\n\n", 1)[1]
+    if equal:
+        from rsfcycle.equal import hbi_command
+
+        def equal_handler(args):
+            """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
+            base, shipped, station, merge = equal
+            return hbi_command(args, here, benchmark, base, shipped,
+                               lambda folder: catalogue(folder, station, merge=merge))
+        commands = dict(commands, equal=equal_handler)
+        # after the list of commands, before the paragraph on WORK
+        head, found, tail = epilog.partition("\n\nWORK is")
+        epilog = head + EQUAL_HELP + found + tail
     parser = argparse.ArgumentParser(
         prog=f"PYTHONPATH=python /usr/bin/python3 benchmarks/{name}/run.py",
-        description=doc.split("\n\n")[0], epilog=doc.split("\n\n", 1)[1],
+        description=description, epilog=epilog,
         formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
     for command, handler in commands.items():
@@ -1346,6 +1370,14 @@ def driver(doc, here, benchmark, commands, extra=None, argv=None):
             p.add_argument("--name", help="the run folder in --work "
                            "(default hbi-<cells>)")
             add_run_options(p, benchmark)
+        if command == "equal":
+            p.add_argument("--run", action="store_true",
+                           help="run the sweeps' missing runs first (both codes side "
+                           "by side, one core each)")
+            p.add_argument("--binary", help="rsfcycle (default build/rsfcycle)")
+            p.add_argument("--hbi-src", help="HBI's clone (default $HBI_SRC)")
+            p.add_argument("--prefix", help="where HBI is built (SRC/rsfcycle-builds)")
+            p.add_argument("--nice", type=int, default=0)
         if extra and command in extra:
             extra[command](p)
         p.set_defaults(handler=handler)

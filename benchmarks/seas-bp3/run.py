@@ -49,7 +49,7 @@ import sys
 import numpy as np
 
 from rsfcycle import bench, catalog, prm, results, run, seas
-from rsfcycle.equal import hbi_command as hbi_equal
+from rsfcycle.peers import hbi
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -519,7 +519,7 @@ def equal_command(args):
     """The cost at equal accuracy against HBI: the shipped 60° thrust run
     (prm/seas-bp3-qd.prm, 1500 years at 25 m) and HBI's, each at its
     loosest tolerance whose catalogue is unchanged (rsfcycle.equal)."""
-    return hbi_equal(args, HERE, "bp3", "prm/seas-bp3-qd.prm", "1e-5",
+    return hbi.equal_command(args, HERE, "bp3", "prm/seas-bp3-qd.prm", "1e-5",
                      lambda folder: Run("", folder).events)
 
 

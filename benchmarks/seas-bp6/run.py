@@ -34,7 +34,7 @@ import sys
 import numpy as np
 
 from rsfcycle import catalog, seas, seas_rules
-from rsfcycle.equal import hbi_command as hbi_equal, unchanged_values
+from rsfcycle.equal import unchanged_values
 from rsfcycle.peers import hbi
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -203,9 +203,9 @@ def compared(folder):
 def equal(args):
     """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
     for law in args.laws:
-        hbi_equal(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6", compared,
+        hbi.equal_command(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6", compared,
                   label=law.lower(), hbi_options=dict(law=law),
-                  compare=lambda a, b: unchanged_values(a, b, within=1e-4))
+                  compare=unchanged_values)
 
 
 def laws(p):

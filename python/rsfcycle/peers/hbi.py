@@ -48,7 +48,7 @@ import sys
 import tarfile
 import time
 
-from rsfcycle import catalog, results, run as run_folder, seas, seas_rules
+from rsfcycle import catalog, equal, results, run as run_folder, seas, seas_rules
 
 COMMIT = "29b8f905ec5cc4fd83e180da792660ae9825543a"
 GIT_URL = "https://github.com/sozawa94/hbi.git"
@@ -1335,12 +1335,10 @@ def driver(doc, here, benchmark, commands, extra=None, argv=None, equal=None):
     name = os.path.basename(here)
     description, epilog = doc.split("\n\n")[0], doc.split("\n\n", 1)[1]
     if equal:
-        from rsfcycle.equal import hbi_command
-
         def equal_handler(args):
             """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
             base, shipped, station, merge = equal
-            return hbi_command(args, here, benchmark, base, shipped,
+            return equal_command(args, here, benchmark, base, shipped,
                                lambda folder: catalogue(folder, station, merge=merge))
         commands = dict(commands, equal=equal_handler)
         # after the list of commands, before the paragraph on WORK
@@ -1399,6 +1397,97 @@ def peer(benchmark, args):
     print(f"{out}: {timing['steps']} steps, {duration(timing['wall'])} wall, "
           f"{timing['user']:.0f} s CPU")
     return out
+
+
+# ---------------------------------------------------------------- equal
+
+def rsfcycle_cost(folder, reference):
+    """rsfcycle's cost of a run [s]: its time loop plus the operator's
+    build as the sweep's reference run measured it (the looser runs read
+    the operator from the reference's file)."""
+    _, loop, _ = rsfcycle_times(folder)
+    _, _, operator = rsfcycle_times(reference)
+    return (loop or math.nan) + (operator or 0.0)
+
+
+def equal_command(args, here, benchmark, base, shipped, results_of, label="",
+                  hbi_options=None, compare=None, within=1e-4):
+    """A driver's `equal` command for a benchmark with HBI as its peer:
+    with --run, rsfcycle's sweep (`base` at `shipped` and looser
+    tolerances, one rank, the operator built once) and HBI's (equal.HBI_EPS)
+    run side by side into WORK/equal, one core each; then each code's
+    loosest unchanged run (`results_of(folder)` gives what `compare`
+    compares) and the ratio of the two costs go to results.csv
+    (equal.<label>*). The rsfcycle cost is its time loop plus the
+    operator's build; HBI's is its whole run."""
+    from concurrent.futures import ThreadPoolExecutor
+    work = os.path.join(args.work, "equal")
+    tag = label + "." if label else ""  # in the keys
+    folder_tag = label + "-" if label else ""
+    ours = [(f"rsfcycle-{folder_tag}{t}", t) for t in equal.tolerances(shipped)]
+    peers = [(f"hbi-{folder_tag}{e}", e) for e in equal.HBI_EPS]
+    reference = os.path.join(work, ours[0][0])
+    if args.run:
+        def sweep_ours():
+            for name, t in ours:
+                folder = os.path.join(work, name)
+                if rsfcycle_times(folder)[1] is not None:
+                    continue
+                entries = {"Time stepping/Tolerance": t}
+                if name != ours[0][0]:
+                    entries["Solver/Green operator file"] = os.path.join(
+                        reference, "green-operator.bin")
+                run_rsfcycle(base, folder, entries, 1, args.binary)
+
+        def sweep_peer():
+            binary = build(source(args.hbi_src), patch_files(benchmark),
+                               args.prefix, args.nice)
+            for name, e in peers:
+                folder = os.path.join(work, name)
+                if not os.path.exists(os.path.join(folder, "timing.txt")):
+                    run(benchmark, folder, binary, args.nice, eps=e,
+                            **(hbi_options or {}))
+
+        os.makedirs(work, exist_ok=True)
+        with ThreadPoolExecutor(2) as pool:
+            for job in [pool.submit(sweep_ours), pool.submit(sweep_peer)]:
+                job.result()
+    found = {"rsfcycle": [], "HBI": []}
+    for name, t in ours:
+        folder = os.path.join(work, name)
+        if rsfcycle_times(folder)[1] is not None:  # its time loop ended
+            found["rsfcycle"].append((name, t, results_of(folder),
+                                      rsfcycle_cost(folder, reference), folder))
+    for name, e in peers:
+        folder = os.path.join(work, name)
+        if os.path.exists(os.path.join(folder, "timing.txt")):
+            found["HBI"].append((name, e, results_of(folder), hbi_time(folder)[0],
+                                 folder))
+    for code, runs in found.items():
+        if not runs:
+            raise FileNotFoundError(f"{work}: no {code} run of the sweep "
+                                    "(run.py equal --run)")
+    chosen = {}
+    for code, runs in found.items():
+        chosen[code], states = equal.loosest(runs, compare or equal.unchanged, within)
+        print(equal.table(code, states))
+    a, b = chosen["rsfcycle"], chosen["HBI"]
+    x = equal.ratio(a, b)
+    print(f"equal accuracy: {a[0]} over {b[0]}: {x:.2f}x")
+    what = f" ({label})" if label else ""
+    rows = [(f"equal.{tag}rsfcycle", a[1], "", "rsfcycle's loosest step tolerance with "
+             f"its results unchanged{what}, of " + ", ".join(r[1] for r in found["rsfcycle"])),
+            (f"equal.{tag}rsfcycle_cost", duration(a[3]), "",
+             f"rsfcycle's time loop at {a[1]} and the operator's build, one rank{what}"),
+            (f"equal.{tag}ratio", f"{x:.2f}", "x", "rsfcycle's cost over HBI's at equal "
+             f"accuracy, side by side, one core each{what}")]
+    record(here, rows, *context_of(a[4]))
+    record(here, [(f"equal.{tag}hbi", b[1], "", "HBI's loosest eps_r with its "
+                       f"results unchanged{what}, of " + ", ".join(r[1] for r in found["HBI"])),
+                      (f"equal.{tag}hbi_cost", duration(b[3]), "",
+                       f"HBI's whole run at eps_r {b[1]}, one core{what}")],
+               *context_of(b[4]))
+    return 0
 
 
 # ---------------------------------------------------------------- CLI

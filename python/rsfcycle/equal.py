@@ -21,10 +21,13 @@ def start_of(event):
 def unchanged(events, reference, within=1e-4) -> Optional[float]:
     """The largest relative change of an event's start against the
     reference catalogue, if both have the same number of events and every
-    start moved by less than `within`; None otherwise."""
+    start moved by less than `within`; None otherwise. A start at t = 0
+    (an event nucleated at the start) is compared relative to the
+    reference's last start."""
     if len(events) != len(reference) or not events:
         return None
-    worst = max(abs(start_of(a) - start_of(b)) / abs(start_of(b))
+    span = abs(start_of(reference[-1])) or 1.0
+    worst = max(abs(start_of(a) - start_of(b)) / (abs(start_of(b)) or span)
                 for a, b in zip(events, reference))
     return worst if worst < within else None
 

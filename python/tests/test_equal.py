@@ -21,6 +21,12 @@ def test_unchanged_within_the_bound():
     assert equal.unchanged([], []) is None
 
 
+def test_a_start_at_zero_is_relative_to_the_last_start():
+    reference = events(0.0, 1000.0)
+    assert math.isclose(equal.unchanged(events(0.05, 1000.0), reference), 5e-5)
+    assert equal.unchanged(events(0.5, 1000.0), reference) is None
+
+
 def test_unchanged_reads_dicts_too():
     assert equal.unchanged([dict(start=100.0)], [dict(start=100.0)]) == 0.0
 

@@ -79,9 +79,7 @@ def results(args):
     for key, value, unit, text in (
             ("bp4-qd.cost", wall and hbi.duration(wall), "", "1000 years, the whole run"),
             ("cost.time_loop", loop and f"{loop:.0f}", "s", "time loop, 1000 years"),
-            ("cost.operator", operator and f"{operator:.0f}", "s", "operator build and its file"),
-            ("cost.vs_hbi", loop and hbi_wall and f"{loop / hbi_wall:.2f}", "x",
-             "time loop against HBI's whole run on one rank (not side by side)")):
+            ("cost.operator", operator and f"{operator:.0f}", "s", "operator build and its file")):
         if value:
             rows.append((key, value, unit, text))
     hbi.record(HERE, rows, *hbi.context_of(ours))

@@ -119,9 +119,6 @@ def results(args):
                      pct(s["rsfcycle-1km"]["interval"] / s["hbi-500m"]["interval"] - 1, 1), "%",
                      f"1 km: recurrence against HBI 500 m ({s['hbi-500m']['interval'] / yr:.2f} yr)"))
     hbi_wall, hbi_cpu = hbi.hbi_time(found["hbi-1km"])
-    if hbi_wall and loop:
-        rows.append(("cost.vs_hbi", f"{loop / hbi_wall:.2f}", "x", "time loop against "
-                     "HBI's whole run on one rank (not side by side)"))
     hbi.record(HERE, rows, context, cores)
     if hbi_wall:
         hbi.record(HERE, [("cost.hbi", f"{hbi_wall:.0f}", "s", "HBI's whole run at 1 km "

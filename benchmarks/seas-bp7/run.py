@@ -107,9 +107,7 @@ def results(args):
     hbi_wall, hbi_cpu = hbi.hbi_time(found["hbi-10m"])
     costs = [("bp7-qd.cost", wall, lambda w: (hbi.duration(w), ""), "10 years, the whole run"),
              ("cost.time_loop", loop, lambda s: (f"{s:.0f}", "s"), "time loop, 10 years"),
-             ("cost.operator", operator, lambda s: (f"{s:.0f}", "s"), "operator build"),
-             ("cost.vs_hbi", loop and hbi_wall and loop / hbi_wall, lambda x: (f"{x:.2f}", "x"),
-              "time loop against HBI's whole run on one rank (not side by side)")]
+             ("cost.operator", operator, lambda s: (f"{s:.0f}", "s"), "operator build")]
     rows += [(key, *fmt(v), text) for key, v, fmt, text in costs if v]
     hbi.record(HERE, rows, *hbi.context_of(found["rsfcycle-10m"]))
     if hbi_wall:

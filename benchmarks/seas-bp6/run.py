@@ -44,6 +44,7 @@ FRONT_DAYS = [100, 365, 730]
 PLOTTED = ["fltst_strk+00", "fltst_strk+10", "fltst_strk+25", "fltst_strk+50"]
 PROFILE_DAYS = [30, 100, 365, 730]
 THRESHOLD = 1e-3  # m: the slip front
+LAWS = {"A": "ageing law", "S": "slip law"}
 
 
 def runs(args):
@@ -154,7 +155,7 @@ def results(args):
     for law in args.laws:
         ours, peer_folder = pair(args.work, law.lower())
         a, b = summary(ours), summary(peer_folder)
-        key, what = f"bp6-qd-{law.lower()}", {"A": "ageing law", "S": "slip law"}[law]
+        key, what = f"bp6-qd-{law.lower()}", LAWS[law]
         fronts = [100 * (x / y - 1) for x, y in zip(a["fronts"], b["fronts"])]
         east = [n for n in seas_rules.BP6_STATIONS if not n.endswith("-15")]
         slips = [100 * (a["stations"][n]["slip"][3] / b["stations"][n]["slip"][3] - 1)
@@ -204,7 +205,7 @@ def equal(args):
     """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
     for law in args.laws:
         hbi.equal_command(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6", compared,
-                  label=law.lower(), hbi_options=dict(law=law),
+                  label=law.lower(), hbi_options=dict(law=law), text=LAWS[law],
                   compare=unchanged_values)
 
 

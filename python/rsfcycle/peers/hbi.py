@@ -1411,14 +1411,14 @@ def rsfcycle_cost(folder, reference):
 
 
 def equal_command(args, here, benchmark, base, shipped, results_of, label="",
-                  hbi_options=None, compare=None, within=1e-4):
+                  hbi_options=None, compare=None, within=1e-4, text=None):
     """A driver's `equal` command for a benchmark with HBI as its peer:
     with --run, rsfcycle's sweep (`base` at `shipped` and looser
     tolerances, one rank, the operator built once) and HBI's (equal.HBI_EPS)
     run side by side into WORK/equal, one core each; then each code's
     loosest unchanged run (`results_of(folder)` gives what `compare`
     compares) and the ratio of the two costs go to results.csv
-    (equal.<label>*). The rsfcycle cost is its time loop plus the
+    (equal.<label>.*, `text` naming the label). The rsfcycle cost is its time loop plus the
     operator's build; HBI's is its whole run."""
     from concurrent.futures import ThreadPoolExecutor
     work = os.path.join(args.work, "equal")
@@ -1474,7 +1474,7 @@ def equal_command(args, here, benchmark, base, shipped, results_of, label="",
     a, b = chosen["rsfcycle"], chosen["HBI"]
     x = equal.ratio(a, b)
     print(f"equal accuracy: {a[0]} over {b[0]}: {x:.2f}x")
-    what = f" ({label})" if label else ""
+    what = f" ({text or label})" if label else ""
     rows = [(f"equal.{tag}rsfcycle", a[1], "", "rsfcycle's loosest step tolerance with "
              f"its results unchanged{what}, of " + ", ".join(r[1] for r in found["rsfcycle"])),
             (f"equal.{tag}rsfcycle_cost", duration(a[3]), "",

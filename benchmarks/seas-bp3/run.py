@@ -22,7 +22,7 @@ From the repository's root, with the package on the path:
   equal    the cost at equal accuracy: rsfcycle at its shipped step
            tolerance and 3 and 10 times looser (one rank), HBI at eps_r
            1e-6, 1e-5, 1e-4 (one core), side by side with --run into
-           WORK/equal; each code's loosest run whose catalogue is unchanged
+           WORK/equal; each code's cheapest run whose catalogue is unchanged
            (rsfcycle.equal), the ratio of the costs into results.csv
   tandem   run tandem on BP3-QD (tandem/run.sh: builds it under
            TANDEM_PREFIX once, about 25 min, then meshes, runs, converts)
@@ -518,7 +518,7 @@ def tandem_command(args):
 def equal_command(args):
     """The cost at equal accuracy against HBI: the shipped 60° thrust run
     (prm/seas-bp3-qd.prm, 1500 years at 25 m) and HBI's, each at its
-    loosest tolerance whose catalogue is unchanged (rsfcycle.equal)."""
+    cheapest run whose catalogue is unchanged (rsfcycle.equal)."""
     return hbi.equal_command(args, HERE, "bp3", "prm/seas-bp3-qd.prm", "1e-5",
                      lambda folder: Run("", folder).events)
 
@@ -603,7 +603,7 @@ def main(argv=None):
     p.set_defaults(handler=results_command)
 
     p = sub.add_parser("equal", help="the cost at equal accuracy against "
-                       "HBI (each code at its loosest tolerance)")
+                       "HBI (each code's cheapest run with unchanged results)")
     p.add_argument("--work", default=os.path.join(HERE, "runs"),
                    help="default benchmarks/seas-bp3/runs (git-ignored)")
     p.add_argument("--run", action="store_true", help="run the sweeps' "

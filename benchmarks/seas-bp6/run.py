@@ -19,7 +19,7 @@ From the repository's root, with the package on the path:
   equal    the cost at equal accuracy: rsfcycle at its shipped step
            tolerance and 3 and 10 times looser (one rank), HBI at eps_r
            1e-6, 1e-5, 1e-4 (one core), side by side with --run into
-           WORK/equal, per law; each code's loosest run whose slip fronts,
+           WORK/equal, per law; each code's cheapest run whose slip fronts,
            slips and peak slip rate are unchanged (within 0.01 %,
            rsfcycle.equal), the ratio of the costs into results.csv
 
@@ -202,7 +202,7 @@ def compared(folder):
 
 
 def equal(args):
-    """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
+    """The cost at equal accuracy against HBI (each code's cheapest run with unchanged results)."""
     for law in args.laws:
         hbi.equal_command(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6", compared,
                   label=law.lower(), hbi_options=dict(law=law), text=LAWS[law],

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """Cost at equal accuracy: each code runs at its shipped tolerance and at
-looser ones; the loosest run whose own results are unchanged against its
-tightest run is the code's figure, and the ratio of two codes' wall times
-is taken there.
+looser ones; of the runs whose own results are unchanged against its
+tightest run (the tightest included) the cheapest, usually the loosest,
+is the code's figure, and the ratio of two codes' costs is taken there.
 
 Unchanged means, for an event catalogue, the same number of events with
 every start within `within` (relative) of the reference's; for other
@@ -46,8 +46,8 @@ def loosest(runs: Sequence, compare: Callable = unchanged, within=1e-4):
     """runs: (name, tolerance, results, wall [s]) in any order. Sorted
     tightest first, each compared with the tightest by `compare(results,
     reference, within)` (None: changed; with within = inf it gives the
-    change itself). Returns (the loosest unchanged run, or the tightest
-    when every looser one changed; a list of (run, state text))."""
+    change itself). Returns (the cheapest unchanged run, the tightest
+    included; a list of (run, state text))."""
     runs = sorted(runs, key=lambda r: float(r[1]))
     if not runs:
         raise ValueError("no runs to compare")
@@ -61,7 +61,7 @@ def loosest(runs: Sequence, compare: Callable = unchanged, within=1e-4):
                                              else " (other events)")))
             continue
         states.append((run, f"unchanged (within {100 * worst:.4f} %)"))
-        if chosen is runs[0] or float(run[1]) > float(chosen[1]):
+        if run[3] < chosen[3]:
             chosen = run
     return chosen, states
 

@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """rsfcycle.equal on hand-made catalogues: a run is unchanged when it has
 the same events with every start within the bound (relative); the loosest
-unchanged run is chosen, never one that changed, and the tightest run
-when every looser one changed."""
+unchanged run is chosen (the cheapest of the unchanged ones, the
+tightest included), never one that changed."""
 
 import math
 
@@ -47,6 +47,11 @@ def test_loosest_takes_the_loosest_unchanged_run():
     assert [(run[0], text.split()[0]) for run, text in states] == [
         ("a", "reference"), ("b", "unchanged"), ("c", "changed")]
     assert equal.ratio(chosen, ("peer", "1e-6", None, 100.0)) == 0.5
+
+
+def test_loosest_takes_the_cheapest_unchanged_run():
+    runs = [("a", "1e-5", events(100.0), 10.0), ("b", "3e-5", events(100.0), 12.0)]
+    assert equal.loosest(runs)[0][0] == "a"
 
 
 def test_loosest_falls_back_to_the_reference():

@@ -1317,7 +1317,7 @@ EQUAL_HELP = """
   equal    the cost at equal accuracy: rsfcycle at its shipped step
            tolerance and 3 and 10 times looser (one rank), HBI at eps_r
            1e-6, 1e-5, 1e-4 (one core), side by side with --run into
-           WORK/equal; each code's loosest run whose catalogue is
+           WORK/equal; each code's cheapest run whose catalogue is
            unchanged (rsfcycle.equal), the ratio of the costs into
            results.csv"""
 
@@ -1336,7 +1336,7 @@ def driver(doc, here, benchmark, commands, extra=None, argv=None, equal=None):
     description, epilog = doc.split("\n\n")[0], doc.split("\n\n", 1)[1]
     if equal:
         def equal_handler(args):
-            """The cost at equal accuracy against HBI (each code at its loosest tolerance)."""
+            """The cost at equal accuracy against HBI (each code's cheapest run with unchanged results)."""
             base, shipped, station, merge = equal
             return equal_command(args, here, benchmark, base, shipped,
                                lambda folder: catalogue(folder, station, merge=merge))
@@ -1416,7 +1416,7 @@ def equal_command(args, here, benchmark, base, shipped, results_of, label="",
     with --run, rsfcycle's sweep (`base` at `shipped` and looser
     tolerances, one rank, the operator built once) and HBI's (equal.HBI_EPS)
     run side by side into WORK/equal, one core each; then each code's
-    loosest unchanged run (`results_of(folder)` gives what `compare`
+    cheapest unchanged run (`results_of(folder)` gives what `compare`
     compares) and the ratio of the two costs go to results.csv
     (equal.<label>.*, `text` naming the label). The rsfcycle cost is its time loop plus the
     operator's build; HBI's is its whole run."""
@@ -1475,14 +1475,14 @@ def equal_command(args, here, benchmark, base, shipped, results_of, label="",
     x = equal.ratio(a, b)
     print(f"equal accuracy: {a[0]} over {b[0]}: {x:.2f}x")
     what = f" ({text or label})" if label else ""
-    rows = [(f"equal.{tag}rsfcycle", a[1], "", "rsfcycle's loosest step tolerance with "
+    rows = [(f"equal.{tag}rsfcycle", a[1], "", "rsfcycle's step tolerance of its cheapest run with "
              f"its results unchanged{what}, of " + ", ".join(r[1] for r in found["rsfcycle"])),
             (f"equal.{tag}rsfcycle_cost", duration(a[3]), "",
              f"rsfcycle's time loop at {a[1]} and the operator's build, one rank{what}"),
             (f"equal.{tag}ratio", f"{x:.2f}", "x", "rsfcycle's cost over HBI's at equal "
              f"accuracy, side by side, one core each{what}")]
     record(here, rows, *context_of(a[4]))
-    record(here, [(f"equal.{tag}hbi", b[1], "", "HBI's loosest eps_r with its "
+    record(here, [(f"equal.{tag}hbi", b[1], "", "HBI's eps_r of its cheapest run with "
                        f"results unchanged{what}, of " + ", ".join(r[1] for r in found["HBI"])),
                       (f"equal.{tag}hbi_cost", duration(b[3]), "",
                        f"HBI's whole run at eps_r {b[1]}, one core{what}")],

@@ -520,7 +520,7 @@ def equal_command(args):
     (prm/seas-bp3-qd.prm, 1500 years at 25 m) and HBI's, each at its
     cheapest run whose catalogue is unchanged (rsfcycle.equal)."""
     return hbi.equal_command(args, HERE, "bp3", "prm/seas-bp3-qd.prm", "1e-5",
-                     lambda folder: Run("", folder).events)
+                             lambda folder: Run("", folder).events)
 
 
 def main(argv=None):
@@ -606,12 +606,7 @@ def main(argv=None):
                        "HBI (each code's cheapest run with unchanged results)")
     p.add_argument("--work", default=os.path.join(HERE, "runs"),
                    help="default benchmarks/seas-bp3/runs (git-ignored)")
-    p.add_argument("--run", action="store_true", help="run the sweeps' "
-                   "missing runs first (both codes side by side, one core each)")
-    p.add_argument("--binary", help="rsfcycle (default build/rsfcycle)")
-    p.add_argument("--hbi-src", help="HBI's clone (default $HBI_SRC)")
-    p.add_argument("--prefix", help="where HBI is built (SRC/rsfcycle-builds)")
-    p.add_argument("--nice", type=int, default=0)
+    hbi.equal_arguments(p)
     p.set_defaults(handler=equal_command)
 
     p = sub.add_parser("tandem", help="run tandem (tandem/run.sh): "

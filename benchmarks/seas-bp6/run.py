@@ -204,9 +204,9 @@ def compared(folder):
 def equal(args):
     """The cost at equal accuracy against HBI (each code's cheapest run with unchanged results)."""
     for law in args.laws:
-        hbi.equal_command(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6", compared,
-                  label=law.lower(), hbi_options=dict(law=law), text=LAWS[law],
-                  compare=unchanged_values)
+        hbi.equal_command(args, HERE, "bp6", f"prm/seas-bp6-qd-{law.lower()}.prm", "1e-6",
+                          compared, label=law.lower(), hbi_options=dict(law=law),
+                          text=LAWS[law], compare=unchanged_values)
 
 
 def laws(p):

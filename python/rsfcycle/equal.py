@@ -42,8 +42,8 @@ def unchanged_values(values, reference, within=1e-3) -> Optional[float]:
     return worst if worst < within else None
 
 
-def loosest(runs: Sequence, compare: Callable = unchanged, within=1e-4):
-    """runs: (name, tolerance, results, wall [s]) in any order. Sorted
+def cheapest_unchanged(runs: Sequence, compare: Callable = unchanged, within=1e-4):
+    """runs: (name, tolerance, results, cost [s]) in any order. Sorted
     tightest first, each compared with the tightest by `compare(results,
     reference, within)` (None: changed; with within = inf it gives the
     change itself). Returns (the cheapest unchanged run, the tightest
@@ -67,15 +67,15 @@ def loosest(runs: Sequence, compare: Callable = unchanged, within=1e-4):
 
 
 def ratio(ours, peer) -> float:
-    """Our wall time over the peer's at the two chosen runs."""
+    """Our cost over the peer's at the two chosen runs."""
     if not peer[3]:
         return math.nan
     return ours[3] / peer[3]
 
 
 def table(code, states: List) -> str:
-    """The runs of one code as printed lines: name, tolerance, wall, state."""
-    return "\n".join(f"{code:9} {run[0]:28} tolerance {run[1]:>7}  wall {run[3]:8.1f} s  "
+    """The runs of one code as printed lines: name, tolerance, cost, state."""
+    return "\n".join(f"{code:9} {run[0]:28} tolerance {run[1]:>7}  cost {run[3]:8.1f} s  "
                      f"{state}" for run, state in states)
 
 

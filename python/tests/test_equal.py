@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: LGPL-2.1-or-later
 """rsfcycle.equal on hand-made catalogues: a run is unchanged when it has
-the same events with every start within the bound (relative); the loosest
-unchanged run is chosen (the cheapest of the unchanged ones, the
-tightest included), never one that changed."""
+the same events with every start within the bound (relative); the
+cheapest unchanged run is chosen (usually the loosest; the tightest is
+included), never one that changed."""
 
 import math
 
@@ -37,26 +37,26 @@ def test_unchanged_values():
     assert equal.unchanged_values([1.0], [1.0, 2.0]) is None
 
 
-def test_loosest_takes_the_loosest_unchanged_run():
+def test_the_loosest_unchanged_run_when_it_is_cheapest():
     reference = events(1000.0, 2000.0)
     runs = [("b", "3e-5", events(1000.01, 2000.0), 50.0),
             ("c", "1e-4", events(1001.0, 2000.0), 30.0),  # changed
             ("a", "1e-5", reference, 80.0)]  # any order
-    chosen, states = equal.loosest(runs)
+    chosen, states = equal.cheapest_unchanged(runs)
     assert chosen[0] == "b"
     assert [(run[0], text.split()[0]) for run, text in states] == [
         ("a", "reference"), ("b", "unchanged"), ("c", "changed")]
     assert equal.ratio(chosen, ("peer", "1e-6", None, 100.0)) == 0.5
 
 
-def test_loosest_takes_the_cheapest_unchanged_run():
+def test_a_dearer_looser_run_is_not_taken():
     runs = [("a", "1e-5", events(100.0), 10.0), ("b", "3e-5", events(100.0), 12.0)]
-    assert equal.loosest(runs)[0][0] == "a"
+    assert equal.cheapest_unchanged(runs)[0][0] == "a"
 
 
-def test_loosest_falls_back_to_the_reference():
+def test_the_reference_when_every_looser_run_changed():
     runs = [("a", "1e-6", events(5.0), 10.0), ("b", "1e-5", events(6.0), 5.0)]
-    assert equal.loosest(runs)[0][0] == "a"
+    assert equal.cheapest_unchanged(runs)[0][0] == "a"
 
 
 def test_tolerances():

@@ -1330,8 +1330,8 @@ def driver(doc, here, benchmark, commands, extra=None, argv=None, equal=None):
     HERE/runs); `runs` gets --binary and --ranks, `peer` HBI's options
     (--hbi-src, --prefix, --nice, --name, the benchmark's run options).
     `equal` (base .prm, shipped tolerance, station, merge [s]) adds the
-    command `equal` (rsfcycle.equal.hbi_command on catalogue()). A missing HBI,
-    build or run folder ends with one line and exit status 2."""
+    command `equal` (equal_command on catalogue()). A missing HBI, build or
+    run folder ends with one line and exit status 2."""
     name = os.path.basename(here)
     description, epilog = doc.split("\n\n")[0], doc.split("\n\n", 1)[1]
     if equal:
@@ -1339,7 +1339,7 @@ def driver(doc, here, benchmark, commands, extra=None, argv=None, equal=None):
             """The cost at equal accuracy against HBI (each code's cheapest run with unchanged results)."""
             base, shipped, station, merge = equal
             return equal_command(args, here, benchmark, base, shipped,
-                               lambda folder: catalogue(folder, station, merge=merge))
+                                 lambda folder: catalogue(folder, station, merge=merge))
         commands = dict(commands, equal=equal_handler)
         # after the list of commands, before the paragraph on WORK
         head, found, tail = epilog.partition("\n\nWORK is")
@@ -1369,13 +1369,7 @@ def driver(doc, here, benchmark, commands, extra=None, argv=None, equal=None):
                            "(default hbi-<cells>)")
             add_run_options(p, benchmark)
         if command == "equal":
-            p.add_argument("--run", action="store_true",
-                           help="run the sweeps' missing runs first (both codes side "
-                           "by side, one core each)")
-            p.add_argument("--binary", help="rsfcycle (default build/rsfcycle)")
-            p.add_argument("--hbi-src", help="HBI's clone (default $HBI_SRC)")
-            p.add_argument("--prefix", help="where HBI is built (SRC/rsfcycle-builds)")
-            p.add_argument("--nice", type=int, default=0)
+            equal_arguments(p)
         if extra and command in extra:
             extra[command](p)
         p.set_defaults(handler=handler)
@@ -1401,13 +1395,21 @@ def peer(benchmark, args):
 
 # ---------------------------------------------------------------- equal
 
+def equal_arguments(p):
+    """The options of a driver's `equal` command (argparse parser `p`)."""
+    p.add_argument("--run", action="store_true", help="run the sweeps' missing "
+                   "runs first (both codes side by side, one core each)")
+    p.add_argument("--binary", help="rsfcycle (default build/rsfcycle)")
+    p.add_argument("--hbi-src", help="HBI's clone (default $HBI_SRC)")
+    p.add_argument("--prefix", help="where HBI is built (SRC/rsfcycle-builds)")
+    p.add_argument("--nice", type=int, default=0)
+
+
 def rsfcycle_cost(folder, reference):
-    """rsfcycle's cost of a run [s]: its time loop plus the operator's
-    build as the sweep's reference run measured it (the looser runs read
-    the operator from the reference's file)."""
-    _, loop, _ = rsfcycle_times(folder)
-    _, _, operator = rsfcycle_times(reference)
-    return (loop or math.nan) + (operator or 0.0)
+    """rsfcycle's cost of a run whose time loop ended [s]: the time loop
+    plus the operator's build as the sweep's reference run measured it
+    (the looser runs read the operator from the reference's file)."""
+    return rsfcycle_times(folder)[1] + (rsfcycle_times(reference)[2] or 0.0)
 
 
 def equal_command(args, here, benchmark, base, shipped, results_of, label="",
@@ -1418,8 +1420,8 @@ def equal_command(args, here, benchmark, base, shipped, results_of, label="",
     run side by side into WORK/equal, one core each; then each code's
     cheapest unchanged run (`results_of(folder)` gives what `compare`
     compares) and the ratio of the two costs go to results.csv
-    (equal.<label>.*, `text` naming the label). The rsfcycle cost is its time loop plus the
-    operator's build; HBI's is its whole run."""
+    (equal.<label>.*, `text` naming the label). The rsfcycle cost is its
+    time loop plus the operator's build; HBI's is its whole run."""
     from concurrent.futures import ThreadPoolExecutor
     work = os.path.join(args.work, "equal")
     tag = label + "." if label else ""  # in the keys
@@ -1441,12 +1443,12 @@ def equal_command(args, here, benchmark, base, shipped, results_of, label="",
 
         def sweep_peer():
             binary = build(source(args.hbi_src), patch_files(benchmark),
-                               args.prefix, args.nice)
+                           args.prefix, args.nice)
             for name, e in peers:
                 folder = os.path.join(work, name)
                 if not os.path.exists(os.path.join(folder, "timing.txt")):
                     run(benchmark, folder, binary, args.nice, eps=e,
-                            **(hbi_options or {}))
+                        **(hbi_options or {}))
 
         os.makedirs(work, exist_ok=True)
         with ThreadPoolExecutor(2) as pool:
@@ -1469,24 +1471,26 @@ def equal_command(args, here, benchmark, base, shipped, results_of, label="",
                                     "(run.py equal --run)")
     chosen = {}
     for code, runs in found.items():
-        chosen[code], states = equal.loosest(runs, compare or equal.unchanged, within)
+        chosen[code], states = equal.cheapest_unchanged(runs, compare or equal.unchanged,
+                                                        within)
         print(equal.table(code, states))
     a, b = chosen["rsfcycle"], chosen["HBI"]
     x = equal.ratio(a, b)
     print(f"equal accuracy: {a[0]} over {b[0]}: {x:.2f}x")
     what = f" ({text or label})" if label else ""
-    rows = [(f"equal.{tag}rsfcycle", a[1], "", "rsfcycle's step tolerance of its cheapest run with "
-             f"its results unchanged{what}, of " + ", ".join(r[1] for r in found["rsfcycle"])),
+    rows = [(f"equal.{tag}rsfcycle", a[1], "", "rsfcycle's step tolerance of its cheapest "
+             f"run with its results unchanged{what}, of "
+             + ", ".join(r[1] for r in found["rsfcycle"])),
             (f"equal.{tag}rsfcycle_cost", duration(a[3]), "",
              f"rsfcycle's time loop at {a[1]} and the operator's build, one rank{what}"),
             (f"equal.{tag}ratio", f"{x:.2f}", "x", "rsfcycle's cost over HBI's at equal "
              f"accuracy, side by side, one core each{what}")]
     record(here, rows, *context_of(a[4]))
     record(here, [(f"equal.{tag}hbi", b[1], "", "HBI's eps_r of its cheapest run with "
-                       f"results unchanged{what}, of " + ", ".join(r[1] for r in found["HBI"])),
-                      (f"equal.{tag}hbi_cost", duration(b[3]), "",
-                       f"HBI's whole run at eps_r {b[1]}, one core{what}")],
-               *context_of(b[4]))
+                   f"results unchanged{what}, of " + ", ".join(r[1] for r in found["HBI"])),
+                  (f"equal.{tag}hbi_cost", duration(b[3]), "",
+                   f"HBI's whole run at eps_r {b[1]}, one core{what}")],
+           *context_of(b[4]))
     return 0
 
 

@@ -272,6 +272,20 @@ namespace rsfcycle
                       "(Trilinos ML, preconditioning CG). A split fault "
                       "(Mesh file/Boundary roles: fault-opposite) needs "
                       "direct or amg");
+    prm.declare_entry(
+      "Direct factor reuse",
+      "false",
+      Bool(),
+      "With Linear correction = direct: false solves exactly, with a "
+      "Cholesky factor of the unknowns off the contact per step size and "
+      "a dense Schur complement on the contact dofs (fast for up to a few "
+      "hundred contact dofs); true factorises the whole truncated Newton "
+      "matrix and keeps the factor of each step size within a time step "
+      "as the preconditioner of CG for the next matrices, which differ "
+      "only in the friction's Hessian, factorising again when Linear "
+      "correction cycles iterations do not reduce the residual by Linear "
+      "correction tolerance (for long faults: the dense Schur complement's "
+      "cost grows as the cube of the contact dofs) [true/false]");
     prm.declare_entry("Direct fallback",
                       "false",
                       Bool(),
@@ -365,6 +379,7 @@ namespace rsfcycle
     linear_correction =
       Choice<LinearCorrection>::parse(prm.get("Linear correction"));
     direct_fallback        = prm.get_bool("Direct fallback");
+    direct_factor_reuse    = prm.get_bool("Direct factor reuse");
     smoothing_steps        = prm.get_integer("Multigrid smoothing steps");
     coarse_reuse_size      = prm.get_integer("Coarse factor reuse size");
     correction_cycles      = prm.get_integer("Linear correction cycles");

@@ -222,6 +222,7 @@ namespace rsfcycle
     unsigned int     max_fixed_point_iterations = 20;
     LinearCorrection linear_correction          = LinearCorrection::multigrid;
     bool             direct_fallback            = false;
+    bool             direct_factor_reuse        = false;
     unsigned int     smoothing_steps            = 3;
     unsigned int     coarse_reuse_size          = 10000;
     unsigned int     correction_cycles          = 1;

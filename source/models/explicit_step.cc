@@ -216,8 +216,10 @@ namespace rsfcycle
       const auto &nodes = contact.contact_set().nodes;
       if (!discretisation.fault_tie.normal_of.empty())
         {
+          // the + side's inertia from the last acceleration (the new one
+          // needs the friction that needs this stress)
           if (!physics::split_normal_stresses(
-                discretisation, contact, next.u, next.normal_stress))
+                discretisation, contact, next.u, &old.a, next.normal_stress))
             {
               failure = "t = " + format_number(t + tau) + " s, explicit step " +
                         format_number(tau) +

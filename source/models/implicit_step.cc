@@ -379,10 +379,8 @@ namespace rsfcycle
     {
       BodyState end;
       advance(old, w, tau, end);
-      const bool compressed = physics::split_normal_stresses(discretisation,
-                                                             contact,
-                                                             end.u,
-                                                             stresses);
+      const bool compressed = physics::split_normal_stresses(
+        discretisation, contact, end.u, inertia ? &end.a : nullptr, stresses);
       for (unsigned int k = 0; k < stresses.size(); ++k)
         potentials[k].normal_force = stresses[k] * contact.nodes()[k].weight;
       return compressed;

@@ -17,6 +17,7 @@
 #include <rsfcycle/solvers/amg_correction.h>
 #include <rsfcycle/solvers/direct_correction.h>
 #include <rsfcycle/solvers/multigrid_correction.h>
+#include <rsfcycle/solvers/reused_factor_correction.h>
 #include <rsfcycle/time/schemes.h>
 
 namespace rsfcycle
@@ -118,7 +119,11 @@ namespace rsfcycle
     switch (solver.linear_correction)
       {
         case Correction::direct:
-          linear_correction = std::make_unique<solvers::DirectCorrection>();
+          if (solver.direct_factor_reuse)
+            linear_correction =
+              std::make_unique<solvers::ReusedFactorCorrection>(control);
+          else
+            linear_correction = std::make_unique<solvers::DirectCorrection>();
           break;
         case Correction::amg:
           linear_correction = std::make_unique<solvers::AMGCorrection>(
@@ -393,10 +398,14 @@ namespace rsfcycle
         if (split_normal && Utilities::MPI::max(normal.empty() ? 0 : 1,
                                                 discretisation.triangulation
                                                   .get_communicator()) == 0)
-          physics::split_normal_stresses(discretisation,
-                                         contact,
-                                         state.u,
-                                         normal);
+          physics::split_normal_stresses(
+            discretisation,
+            contact,
+            state.u,
+            parameters.solver.dynamics == SolverParameters::Dynamics::dynamic ?
+              &state.a :
+              nullptr,
+            normal);
         for (unsigned int k = 0; k < nodes.size(); ++k)
           {
             const auto  &p = nodes[k].params;
@@ -426,6 +435,16 @@ namespace rsfcycle
   ProblemBase<dim>::take_work()
   {
     return implicit_step->take_work();
+  }
+
+
+  template <int dim>
+  void
+  ProblemBase<dim>::step_accepted()
+  {
+    linear_correction->forget();
+    if (fallback_correction)
+      fallback_correction->forget();
   }
 
 

@@ -169,17 +169,20 @@ namespace rsfcycle
         {
           Rows &rows = tied[m];
           rows       = rows_of(*matrices[m], tie, owned, communicator);
-          if (matrices[m] == &stiffness_matrix)
+          if (m != 1)
             {
+              // the + side's elastic (K) and inertial (M) normal force
               std::vector<unsigned int> contact_dofs;
               for (const auto &[a, normal] : tie.normal_of)
                 if (owned.is_element(a))
                   contact_dofs.push_back(a);
               const auto normal_rows = normal_force_rows(
                 tie, rows.start, rows.columns, rows.values, contact_dofs);
-              fault_normal_rows.clear();
+              auto &target =
+                m == 2 ? fault_normal_rows : fault_normal_inertia_rows;
+              target.clear();
               for (unsigned int k = 0; k < normal_rows.size(); ++k)
-                fault_normal_rows[contact_dofs[k]] = normal_rows[k];
+                target[contact_dofs[k]] = normal_rows[k];
             }
           const bool viscosity = matrices[m] == &viscosity_matrix;
           if (viscosity)
@@ -247,14 +250,17 @@ namespace rsfcycle
         }
       // the normal rows in local indices of the new partitioner (read in
       // every fixed-point iteration)
-      std::map<unsigned int, ObservationRow> normal_rows;
-      for (auto &[a, row] : fault_normal_rows)
+      for (auto *rows : {&fault_normal_rows, &fault_normal_inertia_rows})
         {
-          for (auto &[j, weight] : row)
-            j = local_index(j);
-          normal_rows[local_index(a)] = std::move(row);
+          std::map<unsigned int, ObservationRow> normal_rows;
+          for (auto &[a, row] : *rows)
+            {
+              for (auto &[j, weight] : row)
+                j = local_index(j);
+              normal_rows[local_index(a)] = std::move(row);
+            }
+          *rows = std::move(normal_rows);
         }
-      fault_normal_rows = std::move(normal_rows);
       for (unsigned int f = 0; f < 2; ++f)
         {
           la::Vector &force = f == 0 ? body_force : prestress_force;
@@ -290,11 +296,15 @@ namespace rsfcycle
     split_normal_stresses(const Discretisation<dim>    &discretisation,
                           const ContactQuadrature<dim> &contact,
                           const la::Vector             &u,
+                          const la::Vector             *a,
                           std::vector<double>          &stresses)
     {
       u.update_ghost_values();
-      const auto &rows  = discretisation.fault_normal_rows;
-      const auto &nodes = contact.contact_set().nodes;
+      if (a != nullptr)
+        a->update_ghost_values();
+      const auto &rows         = discretisation.fault_normal_rows;
+      const auto &inertia_rows = discretisation.fault_normal_inertia_rows;
+      const auto &nodes        = contact.contact_set().nodes;
       stresses.resize(nodes.size());
       bool compressed = true;
       for (unsigned int k = 0; k < nodes.size(); ++k)
@@ -302,6 +312,9 @@ namespace rsfcycle
           double force = contact.nodes()[k].normal_force;
           for (const auto &[j, weight] : rows.at(nodes[k].dofs[0]))
             force += weight * u.local_element(j);
+          if (a != nullptr)
+            for (const auto &[j, weight] : inertia_rows.at(nodes[k].dofs[0]))
+              force += weight * a->local_element(j);
           stresses[k] = force / contact.nodes()[k].weight;
           compressed  = compressed && force > 0;
         }
@@ -315,11 +328,13 @@ namespace rsfcycle
     split_normal_stresses(const Discretisation<2> &,
                           const ContactQuadrature<2> &,
                           const la::Vector &,
+                          const la::Vector *,
                           std::vector<double> &);
     template bool
     split_normal_stresses(const Discretisation<3> &,
                           const ContactQuadrature<3> &,
                           const la::Vector &,
+                          const la::Vector *,
                           std::vector<double> &);
     template void
     Discretisation<2>::tie_fault_sides();

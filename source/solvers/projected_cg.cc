@@ -55,6 +55,7 @@ namespace rsfcycle
       r = rhs;
       project(r);
       const double r0 = r.l2_norm();
+      reduction       = 0;
       if (!(r0 > 0))
         return 0;
 
@@ -83,6 +84,7 @@ namespace rsfcycle
           if (r.l2_norm() <= control.tolerance * r0)
             break;
         }
+      reduction = r.l2_norm() / r0;
       return cycles;
     }
   } // namespace solvers

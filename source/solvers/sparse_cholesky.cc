@@ -113,15 +113,32 @@ namespace rsfcycle
     void
     SparseCholesky::factorize(const dealii::SparseMatrix<double> &A)
     {
-      const std::size_t n = A.m();
       // Upper triangle in compressed-column form: for a symmetric matrix,
       // column j holds the entries of row j with column index <= j.
-      std::size_t nnz = 0;
-      for (std::size_t j = 0; j < n; ++j)
-        for (auto it = A.begin(j); it != A.end(j); ++it)
-          if (it->column() <= j)
-            ++nnz;
-      cholmod_sparse *S = cholmod_allocate_sparse(n,
+      std::vector<int>    p(1, 0), i;
+      std::vector<double> x;
+      for (std::size_t j = 0; j < A.m(); ++j)
+        {
+          for (auto it = A.begin(j); it != A.end(j); ++it)
+            if (it->column() <= j)
+              {
+                i.push_back(it->column());
+                x.push_back(it->value());
+              }
+          p.push_back(i.size());
+        }
+      factorize(p, i, x);
+    }
+
+
+    void
+    SparseCholesky::factorize(const std::vector<int>    &p,
+                              const std::vector<int>    &i,
+                              const std::vector<double> &x)
+    {
+      const std::size_t n   = p.size() - 1;
+      const std::size_t nnz = x.size();
+      cholmod_sparse   *S   = cholmod_allocate_sparse(n,
                                                   n,
                                                   nnz,
                                                   /*sorted*/ 0,
@@ -129,36 +146,18 @@ namespace rsfcycle
                                                   /*stype*/ 1,
                                                   CHOLMOD_REAL,
                                                   &data->common);
-      auto           *p = static_cast<int *>(S->p);
-      auto           *i = static_cast<int *>(S->i);
-      auto           *x = static_cast<double *>(S->x);
-      std::size_t     k = 0;
-      for (std::size_t j = 0; j < n; ++j)
-        {
-          p[j] = k;
-          for (auto it = A.begin(j); it != A.end(j); ++it)
-            if (it->column() <= j)
-              {
-                i[k] = it->column();
-                x[k] = it->value();
-                ++k;
-              }
-        }
-      p[n] = k;
+      std::copy(p.begin(), p.end(), static_cast<int *>(S->p));
+      std::copy(i.begin(), i.end(), static_cast<int *>(S->i));
+      std::copy(x.begin(), x.end(), static_cast<double *>(S->x));
 
-      const bool same_pattern =
-        data->factor != nullptr &&
-        std::equal(p,
-                   p + n + 1,
-                   data->analysed_p.begin(),
-                   data->analysed_p.end()) &&
-        std::equal(i, i + k, data->analysed_i.begin(), data->analysed_i.end());
+      const bool same_pattern = data->factor != nullptr &&
+                                p == data->analysed_p && i == data->analysed_i;
       if (!same_pattern)
         {
           data->release();
-          data->factor = cholmod_analyze(S, &data->common);
-          data->analysed_p.assign(p, p + n + 1);
-          data->analysed_i.assign(i, i + k);
+          data->factor     = cholmod_analyze(S, &data->common);
+          data->analysed_p = p;
+          data->analysed_i = i;
         }
       cholmod_factorize(S, data->factor, &data->common);
       const int status = data->common.status;

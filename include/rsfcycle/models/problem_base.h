@@ -153,6 +153,8 @@ namespace rsfcycle
     take_work() override;
     std::string
     last_failure() const override;
+    void
+    step_accepted() override;
     /** @} */
 
     /** @name The time::ImplicitModel interface */

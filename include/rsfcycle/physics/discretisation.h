@@ -312,6 +312,12 @@ namespace rsfcycle
        * owned, then ghosts) [N/m^(3-dim)] (GlobalSystem::normal_rows).
        */
       std::map<unsigned int, ObservationRow> fault_normal_rows;
+      /**
+       * The same for the + side's inertia: per contact dof, -n (M a)_c of
+       * the untied mass's row c as a row of the tied accelerations
+       * [kg/m^(3-dim)] (split_normal_stresses()).
+       */
+      std::map<unsigned int, ObservationRow> fault_normal_inertia_rows;
       /** CG iterations of the last gravity equilibrium. */
       unsigned int gravity_iterations = 0;
       /**

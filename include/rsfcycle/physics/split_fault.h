@@ -108,9 +108,13 @@ namespace rsfcycle
 
     /**
      * A split fault's normal stress per contact node of this rank at the
-     * displacement u (Discretisation::fault_normal_rows: the + side's
-     * elastic reaction), (w_k sigma_0 + n_k . u) / w_k [Pa], into
-     * `stresses`; false if a node of any rank is not in compression
+     * displacement u and, with inertia, the acceleration a: the normal
+     * force on the + side's face, (w_k sigma_0 + n_k . u + m_k . a) / w_k
+     * [Pa] (Discretisation::fault_normal_rows n_k: the + side's elastic
+     * reaction; fault_normal_inertia_rows m_k: its mass times the
+     * acceleration, which a wave crossing the fault makes as large as the
+     * elastic part), into `stresses`; a = nullptr: quasi-static (no
+     * inertia). False if a node of any rank is not in compression
      * (collective).
      */
     template <int dim>
@@ -118,6 +122,7 @@ namespace rsfcycle
     split_normal_stresses(const Discretisation<dim>    &discretisation,
                           const ContactQuadrature<dim> &contact,
                           const la::Vector             &u,
+                          const la::Vector             *a,
                           std::vector<double>          &stresses);
 
     /** A dof's part in the tie of a split fault (GlobalSystem::tie_kind). */

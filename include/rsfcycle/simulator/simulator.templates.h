@@ -227,6 +227,7 @@ namespace rsfcycle
           try
             {
               integrator->advance(s.state, s.t, end_time);
+              model.step_accepted();
             }
           catch (const time::StepSizeUnderflow &e)
             {

@@ -80,8 +80,16 @@ namespace rsfcycle
             const Preconditioner          &preconditioner,
             const LinearCorrectionControl &control);
 
+      /** ||residual|| / ||rhs|| at the end of the last solve(). */
+      double
+      relative_residual() const
+      {
+        return reduction;
+      }
+
     private:
       la::Vector r, z, p, q;
+      double     reduction = 0;
     };
   } // namespace solvers
 } // namespace rsfcycle

@@ -7,6 +7,7 @@
 #include <deal.II/lac/vector.h>
 #include <memory>
 #include <mpi.h>
+#include <vector>
 
 namespace rsfcycle
 {
@@ -31,6 +32,18 @@ namespace rsfcycle
       /** Factorise A (symmetric; only its upper triangle is read). */
       void
       factorize(const dealii::SparseMatrix<double> &A);
+
+      /**
+       * Factorise the symmetric matrix whose upper triangle is given in
+       * compressed columns: column j has the rows i[p[j]] ... i[p[j+1]-1]
+       * (each <= j) with the values x. While p and i stay the same, the
+       * symbolic analysis (ordering, supernodes) of the first call is kept
+       * and only the numerical factorisation is repeated.
+       */
+      void
+      factorize(const std::vector<int>    &p,
+                const std::vector<int>    &i,
+                const std::vector<double> &x);
 
       /**
        * Factorise A once per node: the first rank of each node of

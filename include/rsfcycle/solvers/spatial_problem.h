@@ -126,6 +126,15 @@ namespace rsfcycle
       solve(const TruncatedNewtonSystem &system,
             const la::Vector            &rhs,
             la::Vector                  &correction) = 0;
+
+      /**
+       * Drop what depends on the history of earlier solves rather than on
+       * the step matrix alone (called when a checkpoint is written, so that
+       * a resumed run solves as the uninterrupted one).
+       */
+      virtual void
+      forget()
+      {}
     };
   } // namespace solvers
 } // namespace rsfcycle

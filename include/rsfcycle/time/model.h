@@ -80,6 +80,16 @@ namespace rsfcycle
         return {};
       }
 
+      /**
+       * A step has been accepted, and a checkpoint of it may be written:
+       * forget what the next steps would take from earlier ones and a run
+       * resumed from it could not have (a direct correction's factors), so
+       * that a resumed run repeats the uninterrupted one bit for bit.
+       */
+      virtual void
+      step_accepted()
+      {}
+
       /** Why the last step failed, for the message on step underflow. */
       virtual std::string
       last_failure() const

@@ -30,6 +30,7 @@ less than an hour apart.
 import argparse
 import json
 import os
+import re
 import resource
 import subprocess
 import sys
@@ -54,9 +55,19 @@ FD_MERGE = 3600.0  # [s]: BP1-FD's Output/Event merge time
 NO_VTU = {"Output/Writers": "time series, base profile, events, seas"}
 FD3 = dict(NO_VTU, **{"Stop after events": 3})
 FD1 = dict(NO_VTU, **{"Stop after events": 1})
-# explicit steps inside the events, implicit ones between them
+# explicit steps inside the events, implicit ones between them (shipped)
 IE = {"Time stepping/Integrator": "implicit-explicit",
       "Solver/Mass matrix": "lumped"}
+# the implicit step throughout with the consistent mass and the multigrid
+# correction: BP1-FD's set-up of the comparison with SCycle and of the
+# grid studies (bp1-fd.* rows)
+IMPLICIT = {"Time stepping/Integrator": "implicit",
+            "Solver/Mass matrix": "consistent",
+            "Solver/Linear correction": "multigrid",
+            "Solver/Direct factor reuse": "false",
+            "Solver/Linear correction cycles": 20}
+FD3I = dict(FD3, **IMPLICIT)
+FD1I = dict(FD1, **IMPLICIT)
 
 
 def mesh(name):
@@ -82,37 +93,39 @@ RUNS = {
         "Mesh file/File": mesh("seas-bp1-800km.msh")},
         "BP1-QD at 200 m on an 800 km body", ""),
     "bp1-fd": ("seas-bp1-fd.prm", FD3,
-               "BP1-FD as shipped (50 m) to its third event", "bp1-fd.cost"),
-    "bp1-fd-25m": ("seas-bp1-fd.prm", dict(FD3, **{
+               "BP1-FD as shipped (50 m, explicit steps in the events) to "
+               "its third event", "bp1-fd.switch.cost"),
+    "bp1-fd-implicit": ("seas-bp1-fd.prm", FD3I,
+                        "BP1-FD with the implicit step throughout "
+                        "(consistent mass, multigrid) to its third event",
+                        "bp1-fd.cost"),
+    "bp1-fd-25m": ("seas-bp1-fd.prm", dict(FD3I, **{
         "Mesh/Local refinements": 6}), "BP1-FD at 25 m, three events", ""),
-    "bp1-fd-200m": ("seas-bp1-fd.prm", dict(FD3, **{
+    "bp1-fd-200m": ("seas-bp1-fd.prm", dict(FD3I, **{
         "Mesh/Local refinements": 3}), "BP1-FD at 200 m, three events", ""),
-    "bp1-fd-d3": ("seas-bp1-fd.prm", dict(FD3, **{
+    "bp1-fd-d3": ("seas-bp1-fd.prm", dict(FD3I, **{
         "Mesh/Refinement distance": 3}), "BP1-FD, Refinement distance 3",
         ""),
-    "bp1-fd-d5": ("seas-bp1-fd.prm", dict(FD3, **{
+    "bp1-fd-d5": ("seas-bp1-fd.prm", dict(FD3I, **{
         "Mesh/Refinement distance": 5}), "BP1-FD, Refinement distance 5",
         ""),
-    "bp1-fd-d6": ("seas-bp1-fd.prm", dict(FD3, **{
+    "bp1-fd-d6": ("seas-bp1-fd.prm", dict(FD3I, **{
         "Mesh/Refinement distance": 6}), "BP1-FD, Refinement distance 6",
         ""),
-    "bp1-fd-wp-1e-3": ("seas-bp1-fd.prm", dict(FD1, **{
+    "bp1-fd-wp-1e-3": ("seas-bp1-fd.prm", dict(FD1I, **{
         "Time stepping/Tolerance": "1e-3"}), "BP1-FD's first event, "
         "delta 1e-3", ""),
-    "bp1-fd-wp-1e-4": ("seas-bp1-fd.prm", dict(FD1, **{
+    "bp1-fd-wp-1e-4": ("seas-bp1-fd.prm", dict(FD1I, **{
         "Time stepping/Tolerance": "1e-4"}), "the same, delta 1e-4", ""),
-    "bp1-fd-wp-1e-5": ("seas-bp1-fd.prm", FD1,
+    "bp1-fd-wp-1e-5": ("seas-bp1-fd.prm", FD1I,
                        "the same, delta 1e-5 (shipped)", ""),
-    "bp1-fd-wp-rho0": ("seas-bp1-fd.prm", dict(FD1, **{
+    "bp1-fd-wp-rho0": ("seas-bp1-fd.prm", dict(FD1I, **{
         "Solver/Spectral radius": 0}), "the same, rho_inf = 0", ""),
-    "bp1-fd-wp-25m": ("seas-bp1-fd.prm", dict(FD1, **{
+    "bp1-fd-wp-25m": ("seas-bp1-fd.prm", dict(FD1I, **{
         "Mesh/Local refinements": 6}), "the same at 25 m", ""),
     "bp1-fd-ie": ("seas-bp1-fd.prm", dict(FD1, **IE),
                   "BP1-FD's first event, implicit-explicit (lumped mass, "
-                  "Courant number 0.5)", "bp1-fd-ie.cost"),
-    "bp1-fd-ie3": ("seas-bp1-fd.prm", dict(FD3, **IE),
-                   "BP1-FD to its third event, implicit-explicit (lumped "
-                   "mass, Courant number 0.5)", "bp1-fd.ie3.cost"),
+                  "Courant number 0.5)", "bp1-fd.ie.cost"),
     "bp1-fd-ie-25m": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Mesh/Local refinements": 6}), "the same at 25 m", ""),
     "bp1-fd-ie-c025": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
@@ -540,7 +553,7 @@ PYTHONPATH=python python3 -m rsfcycle.results write benchmarks/seas-bp1"""
                    found[1].folder)
     results_fd(work, record)
     results_fd_ie(work, record)
-    results_fd_ie3(work, record)
+    results_fd_switch(work, record)
     results_bp2(work, record)
     return 0
 
@@ -555,16 +568,10 @@ def results_fd_ie(work, record):
         found = load(work, [(name, label)], name)
         if not found:
             continue
-        first = first_event(found[0])
         key = name.replace("bp1-fd-", "bp1-fd.")
-        for field, text, unit, scale, digits in (
-                ("start", "start", "yr", YEAR, 3),
-                ("peak", "peak slip rate", "m/s", 1, 2),
-                ("jump", "surface slip", "m", 1, 4)):
-            record(f"{key}.{field}",
-                   f"{getattr(first, field) / scale:.{digits}f}", unit,
-                   f"implicit-explicit, {label}: first event's {text}",
-                   name, found[0].folder)
+        record_first_event(record, key, first_event(found[0]),
+                           f"implicit-explicit, {label}", name,
+                           found[0].folder)
         mine = context_of(work, name, found[0].folder)
         if "cpu_s" in mine:
             cpu = int(round(mine["cpu_s"]))
@@ -580,41 +587,73 @@ def results_fd_ie(work, record):
                        "event's end", name, found[0].folder)
 
 
-def results_fd_ie3(work, record):
-    """BP1-FD to its third event with explicit steps inside the events:
-    the events against SCycle's and the cost against SCycle's (its
-    time.txt from `peers`)."""
-    found = load(work, [("scycle-50m", "SCycle 50 m"),
-                        ("bp1-fd-ie3", "implicit-explicit")], "bp1-fd.ie3")
-    if len(found) != 2:
+def results_fd_switch(work, record):
+    """BP1-FD as shipped (bp1-fd: explicit steps inside the events) to its
+    third event: the starts, the first event, the cost and the cost over
+    SCycle's wall time (its time.txt from `peers`)."""
+    found = load(work, [("bp1-fd", "implicit-explicit")], "bp1-fd.switch")
+    if not found:
         return
-    peer, ours = found
-    a, b = ours.events(FD_MERGE), peer.events(FD_MERGE)[:3]
-    print(catalog.markdown(catalog.compare(a, b), ours.label, peer.label))
+    ours = found[0]
+    a = ours.events(FD_MERGE)
     if len(a) < 3:
-        print(f"bp1-fd-ie3: {len(a)} of its 3 events (still running or stopped): "
-              "no rows written")
+        print(f"bp1-fd: {len(a)} of its 3 events (still running or "
+              "stopped): no rows written")
         return
     # the second event is not converged in either code (bp1-fd.recurrence):
     # the starts are given, not paired with SCycle's
-    record("bp1-fd.ie3.starts",
+    record("bp1-fd.switch.starts",
            ", ".join(f"{e.start / YEAR:.2f}" for e in a), "yr",
-           "implicit-explicit: the three events' starts (lumped mass, "
-           "Courant number 0.5)", "bp1-fd-ie3", ours.folder)
-    mine = context_of(work, "bp1-fd-ie3", ours.folder)
+           "as shipped (explicit steps in the events, lumped mass, Courant "
+           "number 0.5): the three events' starts", "bp1-fd", ours.folder)
+    record_first_event(record, "bp1-fd.switch", a[0], "as shipped", "bp1-fd",
+                       ours.folder)
+    first_end = wall_after(os.path.join(ours.folder, "log.txt"),
+                           "event 1 ended")
+    if first_end is not None:
+        record("bp1-fd.switch.first_event_wall",
+               f"{first_end // 60} min {first_end % 60:02d}", "s",
+               "as shipped: wall time of one core to the first event's end "
+               "(the log's progress line after it)", "bp1-fd", ours.folder)
+    mine = context_of(work, "bp1-fd", ours.folder)
     timing = os.path.join(work, "scycle-50m", "time.txt")
     if "cpu_s" in mine:
         cpu = int(round(mine["cpu_s"]))
-        record("bp1-fd.ie3.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
-               "implicit-explicit: CPU time of one core to the third "
-               f"event's end ({len(a)} events)", "bp1-fd-ie3", ours.folder)
+        record("bp1-fd.switch.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
+               "as shipped: CPU time of one core to the third event's end",
+               "bp1-fd", ours.folder)
         if os.path.exists(timing):
             theirs = time_v(timing)
-            record("bp1-fd.ie3.cost_ratio",
+            record("bp1-fd.switch.cost_ratio",
                    f"{mine['wall_s'] / theirs['wall_s']:.2f}", "x",
-                   "implicit-explicit: wall time over SCycle's to the third "
-                   f"event ({mine['wall_s']:.0f} against {theirs['wall_s']:.0f} s, "
-                   "one core each, not side by side)", "bp1-fd-ie3", ours.folder)
+                   "as shipped: wall time over SCycle's to the third event "
+                   f"({mine['wall_s']:.0f} against {theirs['wall_s']:.0f} s, "
+                   "one core each, not side by side)", "bp1-fd", ours.folder)
+
+
+def record_first_event(record, key, event, label, name, folder):
+    """The rows KEY.{start,peak,jump} of a BP1-FD run's first event."""
+    for field, text, unit, scale, digits in (
+            ("start", "start", "yr", YEAR, 3),
+            ("peak", "peak slip rate", "m/s", 1, 2),
+            ("jump", "surface slip", "m", 1, 4)):
+        record(f"{key}.{field}",
+               f"{getattr(event, field) / scale:.{digits}f}", unit,
+               f"{label}: first event's {text}", name, folder)
+
+
+def wall_after(log, text):
+    """The wall time [s] of the first progress line ('wall 0h05m41s') after
+    the first line of `log` that contains `text`; None if there is none."""
+    seen = False
+    with open(log) as f:
+        for line in f:
+            seen = seen or text in line
+            match = re.search(r"wall (\d+)h(\d+)m(\d+)s", line)
+            if seen and match:
+                h, m, s = (int(g) for g in match.groups())
+                return 3600 * h + 60 * m + s
+    return None
 
 
 def first_event(s):
@@ -622,9 +661,10 @@ def first_event(s):
 
 
 def results_fd(work, record):
-    """BP1-FD's rows: rsfcycle against SCycle, and each on its grids."""
-    found = load(work, [("scycle-50m", "SCycle 50 m"), ("bp1-fd", "50 m")],
-                 "bp1-fd")
+    """BP1-FD's rows of the implicit step throughout (bp1-fd-implicit):
+    rsfcycle against SCycle, and each on its grids."""
+    found = load(work, [("scycle-50m", "SCycle 50 m"),
+                        ("bp1-fd-implicit", "50 m")], "bp1-fd")
     if len(found) == 2:
         peer, ours = found
         a, b = ours.events(FD_MERGE), peer.events(FD_MERGE)
@@ -632,11 +672,12 @@ def results_fd(work, record):
         p = run.parameters(ours.folder)
         record("bp1-fd.cells", f"{element_size(ours.folder):g}", "m",
                "fault cells (bulk Refinement distance = "
-               f"{p.get('Mesh/Refinement distance', '?')})", "bp1-fd",
-               ours.folder)
+               f"{p.get('Mesh/Refinement distance', '?')})",
+               "bp1-fd-implicit", ours.folder)
         record("bp1-fd.events", f"{len(a)} (to {ours.t[-1] / YEAR:.0f} yr)",
                "", f"events run (Stop after events = "
-               f"{p.get('Stop after events', '?')})", "bp1-fd", ours.folder)
+               f"{p.get('Stop after events', '?')})", "bp1-fd-implicit",
+               ours.folder)
         size = element_size(peer.folder)
         record("bp1-fd.peer", f"SCycle at {size:.0f} m", "",
                f"peer: SCycle {scycle.COMMIT[:7]} with scycle.patch",
@@ -648,8 +689,9 @@ def results_fd(work, record):
             x, y = getattr(a[0], field) / scale, getattr(b[0], field) / scale
             record(f"bp1-fd.{key}", f"{100 * relative(x, y):+.2f}", "%",
                    f"first event's {text} against SCycle ({x:.{digits}f} "
-                   f"against {y:.{digits}f} {unit})", "bp1-fd", ours.folder)
-        mine = context_of(work, "bp1-fd", ours.folder)
+                   f"against {y:.{digits}f} {unit})", "bp1-fd-implicit",
+                   ours.folder)
+        mine = context_of(work, "bp1-fd-implicit", ours.folder)
         timing = os.path.join(work, "scycle-50m", "time.txt")
         if os.path.exists(timing):
             theirs = time_v(timing)
@@ -660,16 +702,16 @@ def results_fd(work, record):
                 record("bp1-fd.cost_ratio",
                        f"{mine['cpu_s'] / theirs['cpu_s']:.2f}", "x",
                        "rsfcycle's CPU time over SCycle's to the third "
-                       "event", "bp1-fd", ours.folder)
+                       "event", "bp1-fd-implicit", ours.folder)
         if "cpu_s" in mine:
             cpu = int(round(mine["cpu_s"]))
             cores = int(mine["cores"])
             record("bp1-fd.cost", f"{cpu // 3600} h {cpu % 3600 // 60} min "
                    "CPU", "", "CPU time" + (" of one core" if cores == 1
                                             else f" of {cores} ranks") +
-                   f" to the third event's end ({cpu} s)", "bp1-fd",
+                   f" to the third event's end ({cpu} s)", "bp1-fd-implicit",
                    ours.folder)
-    found = load(work, [("bp1-fd", "50 m"), ("bp1-fd-25m", "25 m")],
+    found = load(work, [("bp1-fd-implicit", "50 m"), ("bp1-fd-25m", "25 m")],
                  "bp1-fd.25m")
     if len(found) == 2:
         coarse, fine = (s.events(FD_MERGE) for s in found)
@@ -686,22 +728,23 @@ def results_fd(work, record):
             record("bp1-fd.25m.intervals", ", ".join(signed(g) for g in gaps),
                    "%", "25 m against 50 m: second and third intervals",
                    "bp1-fd-25m", found[1].folder)
-    found = load(work, [(n, n) for n in ("bp1-fd", "bp1-fd-d3", "bp1-fd-d5",
+    found = load(work, [(n, n) for n in ("bp1-fd-implicit", "bp1-fd-d3",
+                                         "bp1-fd-d5",
                                          "bp1-fd-d6")], "bp1-fd.bulk")
-    if len(found) > 1 and found[0].label == "bp1-fd":
+    if len(found) > 1 and found[0].label == "bp1-fd-implicit":
         catalogues = [s.events(FD_MERGE) for s in found]
         starts = [c[0].start for c in catalogues]
         record("bp1-fd.bulk.first_event",
                f"{100 * (max(starts) - min(starts)) / starts[0]:.2f}", "%",
                f"first event's start over {len(found)} bulk meshes",
-               "bp1-fd", found[0].folder)
+               "bp1-fd-implicit", found[0].folder)
         second = [(c[1].start - c[0].start) / YEAR for c in catalogues
                   if len(c) > 1]
         if len(second) == len(found):
             record("bp1-fd.bulk.second_interval",
                    f"{min(second):.0f} – {max(second):.0f}", "yr",
                    f"second interval over {len(found)} bulk meshes "
-                   f"(shipped: {second[0]:.2f} yr)", "bp1-fd",
+                   f"(shipped: {second[0]:.2f} yr)", "bp1-fd-implicit",
                    found[0].folder)
     found = load(work, [("scycle-50m", "50 m"), ("scycle-100m", "100 m")],
                  "bp1-fd.scycle")
@@ -1012,7 +1055,8 @@ whose runs are missing is skipped with a line."""
         station_figures(runs_, out)
     # fd-elastic: Refinement distance 3 against the shipped 4
     sub = os.path.join(out, "fd-elastic")
-    runs_ = load(work, [("bp1-fd", "distance 4"), ("bp1-fd-d3", "distance 3")],
+    runs_ = load(work, [("bp1-fd-implicit", "distance 4"),
+                        ("bp1-fd-d3", "distance 3")],
                  "figures/fd-elastic")
     if drawn(runs_, 2, "figures/fd-elastic/"):
         series_figures(runs_, sub, FD_MERGE, recurrence=False)
@@ -1028,8 +1072,9 @@ whose runs are missing is skipped with a line."""
                        os.path.join(sub, "work-precision.png"))
     # fd-scycle: BP1-FD against SCycle
     sub = os.path.join(out, "fd-scycle")
-    runs_ = load(work, [("scycle-50m", "SCycle 50 m"), ("bp1-fd", "50 m"),
-                        ("bp1-fd-25m", "25 m")], "figures/fd-scycle")
+    runs_ = load(work, [("scycle-50m", "SCycle 50 m"),
+                        ("bp1-fd-implicit", "50 m"), ("bp1-fd-25m", "25 m")],
+                 "figures/fd-scycle")
     if drawn(runs_, 2, "figures/fd-scycle/"):
         series_figures(runs_, sub, FD_MERGE)
         station_figures(runs_, sub)

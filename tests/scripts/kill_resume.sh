@@ -12,7 +12,8 @@
 # with step doubling and with local extrapolation, for SEAS BP1-QD with
 # Solver/Bulk = green-function (the Runge-Kutta on the fault; its VTU and
 # HDF5 snapshots: the records and XDMF indices equal), and for SEAS
-# BP3-QD's split fault in the volume method (its normal stress output), and
+# BP3-QD's split fault in the volume method (its normal stress output; with
+# the exact direct correction and with Direct factor reuse), and
 # for Integrator = implicit-explicit (killed among its explicit steps).
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
@@ -123,6 +124,12 @@ subsection Output
 end
 PRM
 }
+# the same with Solver/Direct factor reuse: the factors kept from step to
+# step are not in the checkpoint, so they must not outlive a step
+make_split_reuse_prm() {
+  make_split_prm "$1"
+  printf 'subsection Solver\n  set Direct factor reuse = true\n  set Linear correction cycles = 3\nend\n' >> "$1.prm"
+}
 # Integrator = implicit-explicit (tests/implicit_explicit_event.prm.in):
 # its first 256 steps are explicit, so the kill after 120 rows falls among
 # them, and the resumed run takes the trial of implicit steps that ends
@@ -196,4 +203,5 @@ check_resume slider make_slider_prm
 check_resume slider-local-extrapolation make_slider_le_prm
 check_resume green-function make_green_prm
 check_resume split-volume make_split_prm
+check_resume split-volume-reuse make_split_reuse_prm
 check_resume implicit-explicit make_implicit_explicit_prm

@@ -169,7 +169,8 @@ namespace rsfcycle
         {
           Rows &rows = tied[m];
           rows       = rows_of(*matrices[m], tie, owned, communicator);
-          if (m != 1)
+          const bool viscosity = matrices[m] == &viscosity_matrix;
+          if (!viscosity)
             {
               // the + side's elastic (K) and inertial (M) normal force
               std::vector<unsigned int> contact_dofs;
@@ -178,13 +179,13 @@ namespace rsfcycle
                   contact_dofs.push_back(a);
               const auto normal_rows = normal_force_rows(
                 tie, rows.start, rows.columns, rows.values, contact_dofs);
-              auto &target =
-                m == 2 ? fault_normal_rows : fault_normal_inertia_rows;
+              auto &target = matrices[m] == &stiffness_matrix ?
+                               fault_normal_rows :
+                               fault_normal_inertia_rows;
               target.clear();
               for (unsigned int k = 0; k < normal_rows.size(); ++k)
                 target[contact_dofs[k]] = normal_rows[k];
             }
-          const bool viscosity = matrices[m] == &viscosity_matrix;
           if (viscosity)
             for (unsigned int i = 0; i < n; ++i)
               if (damping_of[i] != 0)

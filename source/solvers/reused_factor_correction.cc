@@ -3,6 +3,7 @@
 // (solvers/reused_factor_correction.h): CHOLMOD factors of the truncated
 // Newton matrix on a pattern analysed once, reused as preconditioners.
 #include <algorithm>
+#include <cmath>
 #include <rsfcycle/solvers/reused_factor_correction.h>
 
 namespace rsfcycle
@@ -152,9 +153,20 @@ namespace rsfcycle
       // factorise the current matrix and solve with it
       if (factor == nullptr)
         {
-          if (factors.size() >= 4)
-            factors.erase(factors.begin());
-          factors.push_back(std::make_unique<Factor>());
+          // a forgotten factor's object, a new one, or the oldest; moved
+          // last (the newest)
+          const auto free =
+            std::find_if(factors.begin(), factors.end(), [](const auto &f) {
+              return std::isnan(f->key);
+            });
+          if (free == factors.end() && factors.size() < 4)
+            factors.push_back(std::make_unique<Factor>());
+          else
+            {
+              const auto reused =
+                free != factors.end() ? free : factors.begin();
+              std::rotate(reused, reused + 1, factors.end());
+            }
           factor      = factors.back().get();
           factor->key = system.matrix_key;
         }

@@ -197,12 +197,16 @@ namespace rsfcycle
      * that it averages over whole cycles: the mean since the start would
      * include a cheap loading phase and promise too little, and the rate
      * of the last minutes swings by orders of magnitude between events
-     * and the steps between them. The simulated time at the start;
-     * (wall seconds, simulated time) of the first progress report after
-     * the first event.
+     * and the steps between them. A run resumed inside an event starts
+     * its mean when that event has ended (until then the log says "ETA
+     * after this event"): the rate of an event's steps would promise
+     * years. (wall seconds, simulated time) of the mean's start; of the
+     * first progress report after the first event; whether the run
+     * resumed inside an event that has not ended yet.
      */
-    double                    t_start = 0;
+    std::pair<double, double> eta_start;
     std::pair<double, double> eta_first_event;
+    bool                      resumed_in_event = false;
     unsigned int              events_at_start = 0, events_at_first = 0;
   };
 } // namespace rsfcycle

@@ -216,7 +216,8 @@ namespace rsfcycle
     int                   signal = 0;
     wall_start = last_progress = last_checkpoint =
       std::chrono::steady_clock::now();
-    t_start         = s.t;
+    eta_start        = {0., s.t};
+    resumed_in_event = resume && (s.events.in_event() || s.events.ending());
     events_at_start = events_at_first = s.events.n_started();
     log << "*** Time loop to t = " << end_time << " s" << std::endl;
     {
@@ -458,6 +459,11 @@ namespace rsfcycle
     last_progress = now;
     const double elapsed =
       std::chrono::duration<double>(now - wall_start).count();
+    if (resumed_in_event && !s.events.in_event() && !s.events.ending())
+      {
+        resumed_in_event = false;
+        eta_start        = {elapsed, s.t};
+      }
     const unsigned int events = s.events.n_started();
     if (events > events_at_start && events_at_first == events_at_start)
       {
@@ -467,19 +473,21 @@ namespace rsfcycle
     const auto [wall_0, t_0] =
       (events > events_at_first && events_at_first > events_at_start) ?
         eta_first_event :
-        std::pair<double, double>(0., t_start);
+        eta_start;
     const double eta =
       (s.t > t_0) ? (elapsed - wall_0) / (s.t - t_0) * (end_time - s.t) : 0.;
-    const auto  &counts = last_sample.statistics;
-    const auto  &rates  = last_sample.slip_rates;
-    const double max_rate =
+    const std::string eta_text = resumed_in_event ?
+                                   std::string("after this event") :
+                                   internal::format_duration(eta);
+    const auto       &counts   = last_sample.statistics;
+    const auto       &rates    = last_sample.slip_rates;
+    const double      max_rate =
       rates.empty() ? 0. : *std::max_element(rates.begin(), rates.end());
     log << "*** Step " << s.step << ": t = " << std::setprecision(6) << s.t
         << " s / " << end_time << " s, dt = " << integrator->last_step_size()
         << " s, max V = " << max_rate / v0
         << " v0, events = " << s.events.n_started() << ", wall "
-        << internal::format_duration(elapsed) << ", ETA "
-        << internal::format_duration(eta) << "\n"
+        << internal::format_duration(elapsed) << ", ETA " << eta_text << "\n"
         << "    solver: ";
     // (an explicit integrator iterates nothing: only its work is shown)
     if (counts.fixed_point_iterations > 0)

@@ -3,6 +3,7 @@
 #define rsfcycle_solvers_reused_factor_correction_h
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <rsfcycle/solvers/projected_cg.h>
 #include <rsfcycle/solvers/sparse_cholesky.h>
@@ -45,11 +46,19 @@ namespace rsfcycle
             const la::Vector            &rhs,
             la::Vector                  &correction) override;
 
-      /** Drop the factors (they hold the Hessians of earlier solves). */
+      /**
+       * Stop reusing the factors (they hold the Hessians of earlier
+       * solves); their objects keep the pattern's analysis for the next
+       * factorisations.
+       */
       void
       forget() override
       {
-        factors.clear();
+        for (auto &f : factors)
+          {
+            f->key = std::numeric_limits<double>::quiet_NaN();
+            f->truncated.clear();
+          }
       }
 
     private:
@@ -61,6 +70,7 @@ namespace rsfcycle
       void
       fill_values(const TruncatedNewtonSystem &system);
 
+      /** A factor; key NaN: forgotten, its object free for a new one. */
       struct Factor
       {
         double            key = 0;

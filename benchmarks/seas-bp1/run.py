@@ -28,6 +28,7 @@ less than an hour apart.
 """
 
 import argparse
+import datetime
 import json
 import os
 import re
@@ -631,11 +632,55 @@ def results_fd_switch(work, record):
                "bp1-fd", ours.folder)
         if os.path.exists(timing):
             theirs = time_v(timing)
+            together = side_by_side(os.path.join(work, "bp1-fd.json"),
+                                    mine["wall_s"],
+                                    os.path.join(work, "scycle-50m"))
             record("bp1-fd.switch.cost_ratio",
                    f"{mine['wall_s'] / theirs['wall_s']:.2f}", "x",
                    "as shipped: wall time over SCycle's to the third event "
                    f"({mine['wall_s']:.0f} against {theirs['wall_s']:.0f} s, "
-                   "one core each, not side by side)", "bp1-fd", ours.folder)
+                   "one core each, "
+                   f"{'side by side' if together else 'not side by side'})",
+                   "bp1-fd", ours.folder)
+    found = load(work, [("scycle-50m", "SCycle 50 m")], "bp1-fd.switch.scycle")
+    if found and len(found[0].events(FD_MERGE)) == 3:
+        b = found[0].events(FD_MERGE)
+        print(catalog.markdown(catalog.compare(a, b), "as shipped",
+                               found[0].label))
+        record("bp1-fd.switch.scycle_starts",
+               ", ".join(f"{e.start / YEAR:.2f}" for e in b), "yr",
+               "SCycle at 50 m: the three events' starts", "scycle-50m")
+        for field, text, unit, scale, digits in (
+                ("start", "start", "yr", YEAR, 3),
+                ("peak", "peak slip rate", "m/s", 1, 2),
+                ("jump", "surface slip", "m", 1, 4)):
+            x, y = getattr(a[0], field) / scale, getattr(b[0], field) / scale
+            record(f"bp1-fd.switch.scycle_{field}",
+                   f"{100 * relative(x, y):+.2f}", "%",
+                   f"as shipped: first event's {text} against SCycle's "
+                   f"({x:.{digits}f} against {y:.{digits}f} {unit})",
+                   "bp1-fd", ours.folder)
+
+
+def side_by_side(context_file, wall, peer_folder):
+    """Whether a run (its JSON context file, written at its end, and its
+    wall time [s]) ran within a peer's run (the start and end lines of
+    the peer folder's timing.txt) for at least 90 % of its wall time."""
+    timing = os.path.join(peer_folder, "timing.txt")
+    if not (os.path.exists(context_file) and os.path.exists(timing)):
+        return False
+    stamps = {}
+    with open(timing, encoding="utf-8") as f:
+        for line in f:
+            words = line.split()
+            if len(words) == 2 and words[0] in ("start", "end"):
+                stamps[words[0]] = datetime.datetime.fromisoformat(
+                    words[1]).timestamp()
+    if len(stamps) < 2:
+        return False
+    end = os.path.getmtime(context_file)
+    overlap = min(end, stamps["end"]) - max(end - wall, stamps["start"])
+    return overlap >= 0.9 * wall
 
 
 def record_first_event(record, key, event, label, name, folder):
@@ -763,6 +808,15 @@ def results_fd(work, record):
                f"{100 * abs(relative(coarse.start, fine.start)):.2f}", "%",
                "SCycle's first event's start, 100 m against 50 m",
                "scycle-100m")
+        for field, text in (("peak", "peak slip rate"),
+                            ("jump", "surface slip")):
+            x, y = getattr(coarse, field), getattr(fine, field)
+            record(f"bp1-fd.scycle.{field}_grid",
+                   f"{100 * relative(x, y):+.2f}", "%",
+                   f"SCycle's first event's {text}, 100 m against 50 m "
+                   f"({x:.{4 if field == 'jump' else 2}f} against "
+                   f"{y:.{4 if field == 'jump' else 2}f} "
+                   f"{'m' if field == 'jump' else 'm/s'})", "scycle-100m")
     for name, key, text in (
             ("scycle-50m-3e-5", "second_interval", "SCycle 50 m, wave "
              "equation from 0.03 mm/s: second interval"),

@@ -570,9 +570,21 @@ def results_fd_ie(work, record):
         if not found:
             continue
         key = name.replace("bp1-fd-", "bp1-fd.")
-        record_first_event(record, key, first_event(found[0]),
-                           f"implicit-explicit, {label}", name,
-                           found[0].folder)
+        # (bp1-fd-ie is the shipped file's first event, whose figures are
+        # the rows bp1-fd.switch.*: only its cost here)
+        if name != "bp1-fd-ie":
+            record_first_event(record, key, first_event(found[0]),
+                               f"implicit-explicit, {label}", name,
+                               found[0].folder)
+        peer = load(work, [("scycle-50m", "SCycle 50 m")], key + ".scycle")
+        if peer and name != "bp1-fd-ie":
+            ours, theirs = first_event(found[0]), first_event(peer[0])
+            for field, text in (("peak", "peak slip rate"),
+                                ("jump", "surface slip")):
+                gap = relative(getattr(ours, field), getattr(theirs, field))
+                record(f"{key}.scycle_{field}", f"{100 * gap:+.1f}", "%",
+                       f"implicit-explicit, {label}: first event's {text} "
+                       "against SCycle's at 50 m", name, found[0].folder)
         mine = context_of(work, name, found[0].folder)
         if "cpu_s" in mine:
             cpu = int(round(mine["cpu_s"]))
@@ -620,9 +632,6 @@ def results_fd_switch(work, record):
     timing = os.path.join(work, "scycle-50m", "time.txt")
     if "cpu_s" in mine:
         cpu = int(round(mine["cpu_s"]))
-        record("bp1-fd.switch.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
-               "as shipped: CPU time of one core to the third event's end",
-               "bp1-fd", ours.folder)
         # README.md's SEAS table: the shipped file's events and cost
         record("bp1-fd.events", f"{len(a)} (to {ours.t[-1] / YEAR:.0f} yr)",
                "", "as shipped: events run (Stop after events = 3)",
@@ -650,13 +659,17 @@ def results_fd_switch(work, record):
         record("bp1-fd.switch.scycle_starts",
                ", ".join(f"{e.start / YEAR:.2f}" for e in b), "yr",
                "SCycle at 50 m: the three events' starts", "scycle-50m")
-        for field, text, unit, scale, digits in (
-                ("start", "start", "yr", YEAR, 3),
-                ("peak", "peak slip rate", "m/s", 1, 2),
-                ("jump", "surface slip", "m", 1, 4)):
+        if os.path.exists(timing):
+            record("bp1-fd.peer_cost", *duration(time_v(timing)["wall_s"]),
+                   f"SCycle's wall time to its third event "
+                   f"({found[0].t[-1] / YEAR:.0f} yr)", "scycle-50m")
+        # (README.md's SEAS table: bp1-fd.peak_slip_rate)
+        for key, field, text, unit, scale, digits in (
+                ("first_event", "start", "start", "yr", YEAR, 3),
+                ("peak_slip_rate", "peak", "peak slip rate", "m/s", 1, 2),
+                ("surface_slip", "jump", "surface slip", "m", 1, 4)):
             x, y = getattr(a[0], field) / scale, getattr(b[0], field) / scale
-            record(f"bp1-fd.switch.scycle_{field}",
-                   f"{100 * relative(x, y):+.2f}", "%",
+            record(f"bp1-fd.{key}", f"{100 * relative(x, y):+.2f}", "%",
                    f"as shipped: first event's {text} against SCycle's "
                    f"({x:.{digits}f} against {y:.{digits}f} {unit})",
                    "bp1-fd", ours.folder)
@@ -740,10 +753,10 @@ def results_fd(work, record):
                 ("peak_slip_rate", "peak", "peak slip rate", "m/s", 1, 2),
                 ("surface_slip", "jump", "surface slip", "m", 1, 4)):
             x, y = getattr(a[0], field) / scale, getattr(b[0], field) / scale
-            record(f"bp1-fd.{key}", f"{100 * relative(x, y):+.2f}", "%",
-                   f"first event's {text} against SCycle ({x:.{digits}f} "
-                   f"against {y:.{digits}f} {unit})", "bp1-fd-implicit",
-                   ours.folder)
+            record(f"bp1-fd.implicit_{key}", f"{100 * relative(x, y):+.2f}",
+                   "%", f"implicit step throughout: first event's {text} "
+                   f"against SCycle ({x:.{digits}f} against {y:.{digits}f} "
+                   f"{unit})", "bp1-fd-implicit", ours.folder)
         mine = context_of(work, "bp1-fd-implicit", ours.folder)
         timing = os.path.join(work, "scycle-50m", "time.txt")
         if os.path.exists(timing):

@@ -578,13 +578,11 @@ def results_fd_ie(work, record):
                                found[0].folder)
         peer = load(work, [("scycle-50m", "SCycle 50 m")], key + ".scycle")
         if peer and name != "bp1-fd-ie":
-            ours, theirs = first_event(found[0]), first_event(peer[0])
-            for field, text in (("peak", "peak slip rate"),
-                                ("jump", "surface slip")):
-                gap = relative(getattr(ours, field), getattr(theirs, field))
-                record(f"{key}.scycle_{field}", f"{100 * gap:+.1f}", "%",
-                       f"implicit-explicit, {label}: first event's {text} "
-                       "against SCycle's at 50 m", name, found[0].folder)
+            record_gaps(record, lambda f: f"{key}.scycle_{f}",
+                        f"implicit-explicit, {label}: first event's {{text}} "
+                        "against SCycle's at 50 m", first_event(found[0]),
+                        first_event(peer[0]), name, found[0].folder,
+                        ("peak", "jump"), 1)
         mine = context_of(work, name, found[0].folder)
         if "cpu_s" in mine:
             cpu = int(round(mine["cpu_s"]))
@@ -664,15 +662,9 @@ def results_fd_switch(work, record):
                    f"SCycle's wall time to its third event "
                    f"({found[0].t[-1] / YEAR:.0f} yr)", "scycle-50m")
         # (README.md's SEAS table: bp1-fd.peak_slip_rate)
-        for key, field, text, unit, scale, digits in (
-                ("first_event", "start", "start", "yr", YEAR, 3),
-                ("peak_slip_rate", "peak", "peak slip rate", "m/s", 1, 2),
-                ("surface_slip", "jump", "surface slip", "m", 1, 4)):
-            x, y = getattr(a[0], field) / scale, getattr(b[0], field) / scale
-            record(f"bp1-fd.{key}", f"{100 * relative(x, y):+.2f}", "%",
-                   f"as shipped: first event's {text} against SCycle's "
-                   f"({x:.{digits}f} against {y:.{digits}f} {unit})",
-                   "bp1-fd", ours.folder)
+        record_gaps(record, lambda f: f"bp1-fd.{GAP_KEY[f]}",
+                    "as shipped: first event's {text} against SCycle's",
+                    a[0], b[0], "bp1-fd", ours.folder)
 
 
 def side_by_side(context_file, wall, peer_folder):
@@ -696,15 +688,33 @@ def side_by_side(context_file, wall, peer_folder):
     return overlap >= 0.9 * wall
 
 
+# a first event's fields: (what, unit, scale, digits shown); the names of
+# the rows of their differences from SCycle's
+FIRST_EVENT = {"start": ("start", "yr", YEAR, 3),
+               "peak": ("peak slip rate", "m/s", 1, 2),
+               "jump": ("surface slip", "m", 1, 4)}
+GAP_KEY = {"start": "first_event", "peak": "peak_slip_rate",
+           "jump": "surface_slip"}
+
+
 def record_first_event(record, key, event, label, name, folder):
     """The rows KEY.{start,peak,jump} of a BP1-FD run's first event."""
-    for field, text, unit, scale, digits in (
-            ("start", "start", "yr", YEAR, 3),
-            ("peak", "peak slip rate", "m/s", 1, 2),
-            ("jump", "surface slip", "m", 1, 4)):
+    for field, (text, unit, scale, digits) in FIRST_EVENT.items():
         record(f"{key}.{field}",
                f"{getattr(event, field) / scale:.{digits}f}", unit,
                f"{label}: first event's {text}", name, folder)
+
+
+def record_gaps(record, key, what, ours, theirs, name, folder=None,
+                fields=("start", "peak", "jump"), digits=2):
+    """Rows key(field) [%]: a first event's fields against another's,
+    described as `what` (with {text}, the field) and both values."""
+    for field in fields:
+        text, unit, scale, shown = FIRST_EVENT[field]
+        x, y = getattr(ours, field) / scale, getattr(theirs, field) / scale
+        record(key(field), f"{100 * relative(x, y):+.{digits}f}", "%",
+               what.format(text=text) + f" ({x:.{shown}f} against "
+               f"{y:.{shown}f} {unit})", name, folder)
 
 
 def wall_after(log, text):
@@ -748,15 +758,10 @@ def results_fd(work, record):
         record("bp1-fd.peer", f"SCycle at {size:.0f} m", "",
                f"peer: SCycle {scycle.COMMIT[:7]} with scycle.patch",
                "bp1-fd", ours.folder)
-        for key, field, text, unit, scale, digits in (
-                ("first_event", "start", "start", "yr", YEAR, 3),
-                ("peak_slip_rate", "peak", "peak slip rate", "m/s", 1, 2),
-                ("surface_slip", "jump", "surface slip", "m", 1, 4)):
-            x, y = getattr(a[0], field) / scale, getattr(b[0], field) / scale
-            record(f"bp1-fd.implicit_{key}", f"{100 * relative(x, y):+.2f}",
-                   "%", f"implicit step throughout: first event's {text} "
-                   f"against SCycle ({x:.{digits}f} against {y:.{digits}f} "
-                   f"{unit})", "bp1-fd-implicit", ours.folder)
+        record_gaps(record, lambda f: f"bp1-fd.implicit_{GAP_KEY[f]}",
+                    "implicit step throughout: first event's {text} "
+                    "against SCycle", a[0], b[0], "bp1-fd-implicit",
+                    ours.folder)
         mine = context_of(work, "bp1-fd-implicit", ours.folder)
         timing = os.path.join(work, "scycle-50m", "time.txt")
         if os.path.exists(timing):
@@ -821,15 +826,9 @@ def results_fd(work, record):
                f"{100 * abs(relative(coarse.start, fine.start)):.2f}", "%",
                "SCycle's first event's start, 100 m against 50 m",
                "scycle-100m")
-        for field, text in (("peak", "peak slip rate"),
-                            ("jump", "surface slip")):
-            x, y = getattr(coarse, field), getattr(fine, field)
-            record(f"bp1-fd.scycle.{field}_grid",
-                   f"{100 * relative(x, y):+.2f}", "%",
-                   f"SCycle's first event's {text}, 100 m against 50 m "
-                   f"({x:.{4 if field == 'jump' else 2}f} against "
-                   f"{y:.{4 if field == 'jump' else 2}f} "
-                   f"{'m' if field == 'jump' else 'm/s'})", "scycle-100m")
+        record_gaps(record, lambda f: f"bp1-fd.scycle.{f}_grid",
+                    "SCycle's first event's {text}, 100 m against 50 m",
+                    coarse, fine, "scycle-100m", None, ("peak", "jump"))
     for name, key, text in (
             ("scycle-50m-3e-5", "second_interval", "SCycle 50 m, wave "
              "equation from 0.03 mm/s: second interval"),

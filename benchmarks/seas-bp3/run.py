@@ -24,6 +24,8 @@ From the repository's root, with the package on the path:
            1e-6, 1e-5, 1e-4 (one core), side by side with --run into
            WORK/equal; each code's cheapest run whose catalogue is unchanged
            (rsfcycle.equal), the ratio of the costs into results.csv
+  fd       the bp3-fd.* rows: a BP3-FD run's events, its first against
+           BP3-QD's and a coarser BP3-FD run's (--dry-run prints them)
   tandem   run tandem on BP3-QD (tandem/run.sh: builds it under
            TANDEM_PREFIX once, about 25 min, then meshes, runs, converts)
 
@@ -56,6 +58,7 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 YEAR = 3.1536e7  # 365 days: BP3's year, prm/seas-bp3-qd.prm's End time
 THRESHOLD = 1e-3  # m/s, the SEAS event threshold
 MERGE = 60.0  # s
+FD_MERGE = 3600.0  # s: prm/seas-bp3-fd.prm's Event merge time
 COARSE = 800.0  # m: the fault's cells of prm/meshes/seas-bp3-*.msh
 FAR_FIELD = {"g0": 0, "g1": 1, "g2": 2}  # Mesh/Global refinements
 # sin(dip) as prm/seas-bp3-qd.prm writes it in x_d = -y / sin(dip)
@@ -118,11 +121,11 @@ def change(rows, event, column):
 class Run:
     """A run folder's events and stations."""
 
-    def __init__(self, name, folder, until=math.inf):
+    def __init__(self, name, folder, until=math.inf, merge=MERGE):
         self.name, self.folder = name, folder
         self.t, self.v = t, v = max_slip_rate(folder)
         self.t_last = t[-1]
-        self.events = [e for e in catalog.detect(t, v, THRESHOLD, MERGE)
+        self.events = [e for e in catalog.detect(t, v, THRESHOLD, merge)
                        if e.start < until]
         self.top = station(folder, "000")
         self.deep = station(folder, "100")
@@ -428,6 +431,84 @@ def results_command(args):
     return 0
 
 
+def fd_rows(args):
+    """[(key, value, unit, description, context, cores)] of the `fd`
+    command: the BP3-FD run's events (merged within FD_MERGE), each
+    ended before the run, against BP3-QD's first event and a coarser
+    BP3-FD run's."""
+    fd = Run("rsfcycle", args.fd, merge=FD_MERGE)
+    fd.events = [e for e in fd.events if e.end < fd.t_last - FD_MERGE]
+    if not fd.events:
+        sys.exit(f"{args.fd}: no event has ended")
+    cells = element_size(args.fd) or 0
+    context, cores = run_of(args.fd, args.cores, args.load)
+    rows = []
+
+    def add(key, value, unit, description, ctx=context):
+        rows.append((key, value, unit, description, ctx, cores))
+
+    starts = [e.start / YEAR for e in fd.events]
+    add("bp3-fd.cells", f"{cells:g}", "m",
+        "BP3-FD: fault cells (60° thrust, explicit steps in the events)")
+    add("bp3-fd.events", f"{len(fd.events)} in {fd.t_last / YEAR:.0f} yr",
+        "", "BP3-FD: events of the run (starts "
+        + ", ".join(f"{x:.2f}" for x in starts) + " yr)")
+    wall = run.resumed_wall_time(args.fd)
+    if wall:
+        add("bp3-fd.cost", *bench.duration(wall),
+            f"BP3-FD: wall time to {fd.t_last / YEAR:.0f} yr, one rank "
+            "(resumed segments summed)")
+    add("bp3-fd.peer", "none", "", "BP3-FD: no peer run; rsfcycle's "
+        "BP3-QD and a coarser run instead")
+    intervals = catalog.intervals(fd.events)
+    add("bp3-fd.recurrence", "no peer; intervals " + ", ".join(
+        f"{x / YEAR:.2f}" for x in intervals) + " yr" if intervals else
+        "one event", "", "BP3-FD: intervals of the run")
+    add("bp3-fd.peak_slip_rate", "no peer; " + ", ".join(
+        f"{e.peak:.2f}" for e in fd.events) + " m/s", "",
+        "BP3-FD: peak slip rates")
+    first = fd.events[0]
+    for flag, key, what in ((args.qd, "qd", "BP3-QD's (same cells)"),
+                            (args.coarse, "coarse", "the coarser run's")):
+        if not flag:
+            continue
+        other = Run(key, flag, merge=FD_MERGE if key == "coarse" else MERGE)
+        if not other.events:
+            continue
+        o = other.events[0]
+        size = element_size(flag)
+        ctx, _ = run_of(flag, args.cores)
+        label = f"{what[:-2]} at {size:g} m" if size else what
+        add(f"bp3-fd.{key}.start", signed(percent(first.start, o.start), 2),
+            "%", f"BP3-FD's first event's start against {label} "
+            f"({first.start / YEAR:.2f} against {o.start / YEAR:.2f} yr)", ctx)
+        add(f"bp3-fd.{key}.peak", signed(percent(first.peak, o.peak), 1),
+            "%", f"BP3-FD's first peak slip rate against {label} "
+            f"({first.peak:.2f} against {o.peak:.2f} m/s)", ctx)
+        if first.jump is not None and o.jump:
+            add(f"bp3-fd.{key}.jump", signed(percent(first.jump, o.jump), 2),
+                "%", f"BP3-FD's first event's slip at the surface against "
+                f"{label} ({first.jump:.3f} against {o.jump:.3f} m)", ctx)
+    return rows
+
+
+def fd_command(args):
+    """The `fd` command."""
+    rows = fd_rows(args)
+    out = csv.writer(sys.stdout, lineterminator="\n")
+    for key, value, unit, description, context, cores in rows:
+        if args.dry_run:
+            out.writerow([key, value, unit, context["commit"],
+                          context["date"], cores, context["load"],
+                          description])
+        else:
+            results.record(HERE, key, value, unit, description, cores,
+                           context)
+    if not args.dry_run:
+        print(f"{len(rows)} rows written to {os.path.join(HERE, 'results.csv')}")
+    return 0
+
+
 # -------------------------------------------------------------------- runs
 
 def variant_entries(dip, sense, cells, far_field, years, problem):
@@ -601,6 +682,19 @@ def main(argv=None):
     p.add_argument("--dry-run", action="store_true",
                    help="print the rows, write nothing")
     p.set_defaults(handler=results_command)
+
+    p = sub.add_parser("fd", help="the bp3-fd.* rows of results.csv: a "
+                       "BP3-FD run's events against BP3-QD's and a coarser "
+                       "BP3-FD run's first event")
+    p.add_argument("--fd", required=True, help="the BP3-FD run folder "
+                   "(runs --problem fd)")
+    p.add_argument("--qd", help="a BP3-QD run folder with the same cells")
+    p.add_argument("--coarse", help="a BP3-FD run folder with coarser cells")
+    p.add_argument("--cores", type=int, default=1)
+    p.add_argument("--load", help="the machine's load during the run")
+    p.add_argument("--dry-run", action="store_true",
+                   help="print the rows, write nothing")
+    p.set_defaults(handler=fd_command)
 
     p = sub.add_parser("equal", help="the cost at equal accuracy against "
                        "HBI (each code's cheapest run with unchanged results)")

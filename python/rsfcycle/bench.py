@@ -240,6 +240,15 @@ def text(path):
         return f.read()
 
 
+def duration(seconds):
+    """(value, unit) as results.csv writes wall times: '9 min 05' s,
+    '6 h 02' min."""
+    seconds = int(round(seconds))
+    if seconds < 3600:
+        return f"{seconds // 60} min {seconds % 60:02d}", "s"
+    return f"{seconds // 3600} h {seconds % 3600 // 60:02d}", "min"
+
+
 def timer_sections(log):
     """{section: wall time [s]} of the first TimerOutput table in a run's
     screen output (on several ranks: rank 0's)."""

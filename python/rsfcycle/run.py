@@ -154,6 +154,44 @@ def wall_time(folder):
     return float(found[-1]) if found else None
 
 
+_PROGRESS = re.compile(r"^\*\*\* Step (\d+):.*, wall (\d+)h(\d+)m(\d+)s")
+_RESUMED = re.compile(r"^Resumed from the checkpoint at t = \S+ s, step (\d+)")
+_TOTAL = re.compile(r"Total wallclock time elapsed since start\s*\|"
+                    r"\s*([0-9.e+]+)s")
+
+
+def resumed_wall_time(folder):
+    """The wall time [s] of a run that may have been resumed (log.txt):
+    each segment (the start, then each "Resumed from the checkpoint ...,
+    step N") counts to its last progress line ("*** Step K: ... wall
+    XhYYmZZs") at or before the step the next segment resumed from (the
+    steps after that checkpoint were taken again), the last segment to its
+    TimerOutput total, else to its last progress line; None without
+    progress lines."""
+    segments = [[]]  # per segment: (step, wall s) of its progress lines
+    resumed_at = []  # the step each later segment resumed from
+    total = None
+    with open(_path(folder, "log.txt"), encoding="utf-8") as f:
+        for line in f:
+            if m := _PROGRESS.match(line):
+                h, mi, sec = (int(x) for x in m.group(2, 3, 4))
+                segments[-1].append((int(m.group(1)), 3600 * h + 60 * mi + sec))
+            elif m := _RESUMED.match(line):
+                resumed_at.append(int(m.group(1)))
+                segments.append([])
+                total = None
+            elif m := _TOTAL.search(line):
+                total = float(m.group(1))
+    if not any(segments):
+        return None
+    wall = 0.0
+    for lines, step in zip(segments, resumed_at):
+        wall += max((w for k, w in lines if k <= step), default=0)
+    last = segments[-1]
+    return wall + (total if total is not None else
+                   (last[-1][1] if last else 0))
+
+
 def section_time(folder, section):
     """The wall time of one TimerOutput section (e.g. 'Time stepping') [s],
     the last table's, or None."""

@@ -180,3 +180,19 @@ def test_cli_from_stage_functions(tmp_path, capsys):
     assert "local refinements (default 6)" in capsys.readouterr().out
     with pytest.raises(SystemExit):
         bench.cli("doc", "demo", stages, [])
+
+
+def test_resumed_wall_time(tmp_path):
+    """A run resumed once: the first segment counts to its progress line at
+    the checkpoint's step (12, not 14: those steps were taken again), the
+    second to its TimerOutput total."""
+    (tmp_path / "log.txt").write_text(
+        "*** Step 1: t = 1 s / 9 s, dt = 1 s, wall 0h00m10s, ETA 0h01m00s\n"
+        "*** Step 12: t = 5 s / 9 s, dt = 1 s, wall 0h01m40s, ETA 0h00m50s\n"
+        "*** Step 14: t = 6 s / 9 s, dt = 1 s, wall 0h02m00s, ETA 0h00m40s\n"
+        "Resumed from the checkpoint at t = 5 s, step 12\n"
+        "*** Step 13: t = 6 s / 9 s, dt = 1 s, wall 0h00m05s, ETA 0h00m30s\n"
+        "| Total wallclock time elapsed since start    |        30s |\n")
+    assert run.resumed_wall_time(tmp_path) == 100 + 30
+    (tmp_path / "log.txt").write_text("no progress\n")
+    assert run.resumed_wall_time(tmp_path) is None

@@ -574,11 +574,7 @@ def results_fd_ie(work, record):
             continue
         key = name.replace("bp1-fd-", "bp1-fd.")
         # (bp1-fd-ie is the shipped file's first event, whose figures are
-        # the rows bp1-fd.switch.*: only its cost here)
-        if name != "bp1-fd-ie":
-            record_first_event(record, key, first_event(found[0]),
-                               f"implicit-explicit, {label}", name,
-                               found[0].folder)
+        # the rows bp1-fd.*: only its cost here)
         peer = load(work, [("scycle-50m", "SCycle 50 m")], key + ".scycle")
         if peer and name != "bp1-fd-ie":
             record_gaps(record, lambda f: f"{key}.scycle_{f}",
@@ -620,8 +616,6 @@ def results_fd_switch(work, record):
            ", ".join(f"{e.start / YEAR:.2f}" for e in a), "yr",
            "as shipped (explicit steps in the events, lumped mass, Courant "
            "number 0.5): the three events' starts", "bp1-fd", ours.folder)
-    record_first_event(record, "bp1-fd.switch", a[0], "as shipped", "bp1-fd",
-                       ours.folder)
     first_end = wall_after(os.path.join(ours.folder, "log.txt"),
                            "event 1 ended")
     if first_end is not None:
@@ -698,14 +692,6 @@ FIRST_EVENT = {"start": ("start", "yr", YEAR, 3),
                "jump": ("surface slip", "m", 1, 4)}
 GAP_KEY = {"start": "first_event", "peak": "peak_slip_rate",
            "jump": "surface_slip"}
-
-
-def record_first_event(record, key, event, label, name, folder):
-    """The rows KEY.{start,peak,jump} of a BP1-FD run's first event."""
-    for field, (text, unit, scale, digits) in FIRST_EVENT.items():
-        record(f"{key}.{field}",
-               f"{getattr(event, field) / scale:.{digits}f}", unit,
-               f"{label}: first event's {text}", name, folder)
 
 
 def record_gaps(record, key, what, ours, theirs, name, folder=None,

@@ -225,8 +225,7 @@ namespace rsfcycle
 
     /**
      * Mass M (density), viscosity C (Kelvin-Voigt, shear and bulk
-     * viscosity; the sponge's alpha M) and stiffness K (bulk modulus,
-     * Poisson ratio). A stress of
+     * viscosity) and stiffness K (bulk modulus, Poisson ratio). A stress of
      * "the same form" is lambda tr(e) I + 2 mu e with
      * lambda = bulk - 2/3 shear.
      */
@@ -300,9 +299,6 @@ namespace rsfcycle
               }
             cell_mass(i, i) = row;
           }
-      // the sponge: C += alpha M, with the mass as the run takes it
-      if (const double alpha = scene.sponge_damping(cell->center()); alpha != 0)
-        cell_viscosity.add(alpha, cell_mass);
     }
 
 

@@ -45,7 +45,9 @@ namespace rsfcycle
      * whose period is a few of its steps, also below R tau_e: after a
      * rupture at 50 m in SEAS BP3-FD's thrust, trials that ended below R
      * tau_e kept the run explicit for minutes of simulated time, those that
-     * go on from 4 tau_e returned to implicit steps at the first trial).
+     * go on from 4 tau_e returned to implicit steps at the first trial from
+     * a checkpoint minutes after it; in the first minute and a half the
+     * waves hold every trial at 4 tau_e).
      *
      * Every decision counts steps, so a run is the same on any number of
      * ranks and after a resume. A model without an explicit step (viscous

@@ -41,7 +41,8 @@ try:
     import numpy as np
     from rsfcycle import bench, catalog, prm, results, run, seas
     from rsfcycle.bench import duration
-    from rsfcycle.equal import unchanged
+    from rsfcycle.equal import cheapest_unchanged, unchanged
+    from rsfcycle.equal import table as equal_table
     from rsfcycle.peers import PeerNotFound, qdyn, scycle, source, time_v
 except ImportError as error:
     print(f"run.py: {error}: run from the repository's root with "
@@ -1023,6 +1024,42 @@ def work_precision(runs, reference, path):
     plt.close(fig)
 
 
+def cost_scycle(work, record):
+    """SCycle's BP1-FD at equal accuracy: scycle-50m (timeStepTol 1e-7)
+    and scycle-50m-tol1e-6 (`peers`); the loosest whose three events start
+    within 0.01 % of the tightest's is SCycle's figure, its CPU time
+    against rsfcycle's as shipped (bp1-fd.cost in results.csv) goes to the
+    rows bp1-fd.equal_*. Nothing when a run is missing."""
+    tolerance = {"scycle-50m": "1e-7", "scycle-50m-tol1e-6": "1e-6"}
+    runs = []
+    for name, tol in tolerance.items():
+        found = load(work, [(name, name)], "cost")
+        timing = os.path.join(peer_folder(work, name), "time.txt")
+        if not found or not os.path.exists(timing):
+            print(f"SCycle: no run {name} with its time.txt in {work}")
+            return False
+        runs.append((name, tol, found[0].events(FD_MERGE),
+                     time_v(timing)["cpu_s"]))
+    chosen, states = cheapest_unchanged(runs)
+    print(equal_table("SCycle", states))
+    worst = max(abs(relative(a.start, b.start))
+                for a, b in zip(runs[1][2], runs[0][2]))
+    record("bp1-fd.equal_scycle", chosen[1], "",
+           "SCycle's loosest timeStepTol of 1e-7, 1e-6 with its three "
+           "events unchanged (starts within 0.01 %); at 1e-6 they move "
+           f"by up to {100 * worst:.2f} %", chosen[0])
+    ours = results.read_results(os.path.join(HERE, "results.csv")).get(
+        "bp1-fd.cost")
+    if ours:
+        minutes, _, seconds = ours.value.partition(" min ")
+        cpu = 60 * int(minutes) + int(seconds)
+        record("bp1-fd.equal_ratio", f"{cpu / chosen[3]:.2f}", "x",
+               f"rsfcycle as shipped (delta 1e-5, {cpu} s) over SCycle at "
+               f"timeStepTol {chosen[1]} ({chosen[3]:.0f} s), CPU time to "
+               "the third event", chosen[0])
+    return True
+
+
 def cmd_cost(args):
     """rsfcycle's cost against QDYN's at equal accuracy over 1000 years of
 BP1-QD: the runs bp1-qd-1000yr-DELTA (`runs`) and qdyn-bp1-1000yr-ACC
@@ -1030,7 +1067,9 @@ BP1-QD: the runs bp1-qd-1000yr-DELTA (`runs`) and qdyn-bp1-1000yr-ACC
 run at the tightest tolerance is the reference; the loosest one whose
 catalogue has the same events, every start within 0.01 % of the
 reference's, is taken, and the ratio of the two codes' wall times there
-goes to results.csv (bp1-qd.equal_*)."""
+goes to results.csv (bp1-qd.equal_*). Then SCycle's BP1-FD the same way
+(cost_scycle)."""
+    scycle_done = cost_scycle(args.work, Recorder(args.work))
     families = {
         "rsfcycle": [n for n in RUNS if n.startswith("bp1-qd-1000yr-")],
         "QDYN": [n for n in PEERS if n.startswith("qdyn-bp1-1000yr-")]}
@@ -1046,7 +1085,7 @@ goes to results.csv (bp1-qd.equal_*)."""
         if not found:
             print(f"run.py: no {code} run of `cost` in {args.work}",
                   file=sys.stderr)
-            return 2
+            return 0 if scycle_done else 2
         reference = found[0][1].events()
         for name, series in found:
             folder = (peer_folder(args.work, name) if name in PEERS else

@@ -412,23 +412,28 @@ def result_rows(args):
     return rows
 
 
-def results_command(args):
-    """The `results` command."""
-    rows = result_rows(args)
+def write_rows(rows, dry_run):
+    """Rows (key, value, unit, description, context, cores) into
+    results.csv, or printed as CSV with dry_run."""
     out = csv.writer(sys.stdout, lineterminator="\n")
     for key, value, unit, description, context, cores in rows:
-        if args.dry_run:
+        if dry_run:
             out.writerow([key, value, unit, context["commit"],
                           context["date"], cores, context["load"],
                           description])
         else:
             results.record(HERE, key, value, unit, description, cores,
                            context)
-    if not args.dry_run:
+    if not dry_run:
         print(f"{len(rows)} rows written to {os.path.join(HERE, 'results.csv')}"
               "; refresh the README: PYTHONPATH=python python3 -m "
               "rsfcycle.results write benchmarks/seas-bp3")
     return 0
+
+
+def results_command(args):
+    """The `results` command."""
+    return write_rows(result_rows(args), args.dry_run)
 
 
 def fd_rows(args):
@@ -468,7 +473,7 @@ def fd_rows(args):
         f"{e.peak:.2f}" for e in fd.events) + " m/s", "",
         "BP3-FD: peak slip rates")
     first = fd.events[0]
-    for flag, key, what in ((args.qd, "qd", "BP3-QD's (same cells)"),
+    for flag, key, what in ((args.qd, "qd", "BP3-QD's"),
                             (args.coarse, "coarse", "the coarser run's")):
         if not flag:
             continue
@@ -478,7 +483,7 @@ def fd_rows(args):
         o = other.events[0]
         size = element_size(flag)
         ctx, _ = run_of(flag, args.cores)
-        label = f"{what[:-2]} at {size:g} m" if size else what
+        label = f"{what} at {size:g} m" if size else what
         add(f"bp3-fd.{key}.start", signed(percent(first.start, o.start), 2),
             "%", f"BP3-FD's first event's start against {label} "
             f"({first.start / YEAR:.2f} against {o.start / YEAR:.2f} yr)", ctx)
@@ -494,19 +499,7 @@ def fd_rows(args):
 
 def fd_command(args):
     """The `fd` command."""
-    rows = fd_rows(args)
-    out = csv.writer(sys.stdout, lineterminator="\n")
-    for key, value, unit, description, context, cores in rows:
-        if args.dry_run:
-            out.writerow([key, value, unit, context["commit"],
-                          context["date"], cores, context["load"],
-                          description])
-        else:
-            results.record(HERE, key, value, unit, description, cores,
-                           context)
-    if not args.dry_run:
-        print(f"{len(rows)} rows written to {os.path.join(HERE, 'results.csv')}")
-    return 0
+    return write_rows(fd_rows(args), args.dry_run)
 
 
 # -------------------------------------------------------------------- runs

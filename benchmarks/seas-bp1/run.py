@@ -126,6 +126,10 @@ RUNS = {
         "Solver/Spectral radius": 0}), "the same, rho_inf = 0", ""),
     "bp1-fd-wp-25m": ("seas-bp1-fd.prm", dict(FD1I, **{
         "Mesh/Local refinements": 6}), "the same at 25 m", ""),
+    "bp1-fd-implicit-lumped": ("seas-bp1-fd.prm", dict(FD1I, **{
+        "Solver/Mass matrix": "lumped"}),
+        "BP1-FD's first event, the implicit step throughout with the "
+        "explicit steps' lumped mass", ""),
     "bp1-fd-ie": ("seas-bp1-fd.prm", dict(FD1, **IE),
                   "BP1-FD's first event, implicit-explicit (lumped mass, "
                   "Courant number 0.5)", "bp1-fd.ie.cost"),

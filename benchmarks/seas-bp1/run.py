@@ -829,6 +829,20 @@ def results_fd(work, record):
             record(f"bp1-fd.scycle.{key}",
                    f"{(e[1].start - e[0].start) / YEAR:.2f}", "yr", text,
                    name)
+    # SCycle at a looser timeStepTol (`cost`): its starts beside the
+    # shipped tolerance's (bp1-fd.switch.scycle_starts)
+    found = load(work, [("scycle-50m-tol1e-6", "1e-6")], "bp1-fd.scycle.tol")
+    timing = os.path.join(work, "scycle-50m-tol1e-6", "time.txt")
+    if found and len(found[0].events(FD_MERGE)) == 3 and os.path.exists(
+            timing):
+        record("bp1-fd.scycle.tol1e-6_starts", ", ".join(
+            f"{e.start / YEAR:.2f}" for e in found[0].events(FD_MERGE)),
+            "yr", "SCycle at 50 m, timeStepTol 1e-6 (shipped 1e-7): the "
+            "three events' starts", "scycle-50m-tol1e-6")
+        record("bp1-fd.scycle.tol1e-6_cpu",
+               *duration(time_v(timing)["cpu_s"]),
+               "SCycle at timeStepTol 1e-6: CPU time to its third event",
+               "scycle-50m-tol1e-6")
 
 
 def results_bp2(work, record):

@@ -843,6 +843,17 @@ def results_fd(work, record):
                *duration(time_v(timing)["cpu_s"]),
                "SCycle at timeStepTol 1e-6: CPU time to its third event",
                "scycle-50m-tol1e-6")
+    # and rsfcycle at a looser delta (`cost`), beside bp1-fd.switch.starts
+    found = load(work, [("bp1-fd-tol3e-5", "3e-5")], "bp1-fd.tol3e-5")
+    mine = context_of(work, "bp1-fd-tol3e-5")
+    if found and len(found[0].events(FD_MERGE)) == 3 and "cpu_s" in mine:
+        record("bp1-fd.tol3e-5_starts", ", ".join(
+            f"{e.start / YEAR:.2f}" for e in found[0].events(FD_MERGE)),
+            "yr", "as shipped at delta 3e-5 (shipped 1e-5): the three "
+            "events' starts", "bp1-fd-tol3e-5", found[0].folder)
+        record("bp1-fd.tol3e-5_cpu", *duration(mine["cpu_s"]),
+               "as shipped at delta 3e-5: CPU time of one core to the third "
+               "event's end", "bp1-fd-tol3e-5", found[0].folder)
 
 
 def results_bp2(work, record):

@@ -829,31 +829,33 @@ def results_fd(work, record):
             record(f"bp1-fd.scycle.{key}",
                    f"{(e[1].start - e[0].start) / YEAR:.2f}", "yr", text,
                    name)
-    # SCycle at a looser timeStepTol (`cost`): its starts beside the
-    # shipped tolerance's (bp1-fd.switch.scycle_starts)
-    found = load(work, [("scycle-50m-tol1e-6", "1e-6")], "bp1-fd.scycle.tol")
-    timing = os.path.join(work, "scycle-50m-tol1e-6", "time.txt")
-    if found and len(found[0].events(FD_MERGE)) == 3 and os.path.exists(
-            timing):
-        record("bp1-fd.scycle.tol1e-6_starts", ", ".join(
-            f"{e.start / YEAR:.2f}" for e in found[0].events(FD_MERGE)),
-            "yr", "SCycle at 50 m, timeStepTol 1e-6 (shipped 1e-7): the "
-            "three events' starts", "scycle-50m-tol1e-6")
-        record("bp1-fd.scycle.tol1e-6_cpu",
-               *duration(time_v(timing)["cpu_s"]),
-               "SCycle at timeStepTol 1e-6: CPU time to its third event",
-               "scycle-50m-tol1e-6")
-    # and rsfcycle at a looser delta (`cost`), beside bp1-fd.switch.starts
-    found = load(work, [("bp1-fd-tol3e-5", "3e-5")], "bp1-fd.tol3e-5")
-    mine = context_of(work, "bp1-fd-tol3e-5")
-    if found and len(found[0].events(FD_MERGE)) == 3 and "cpu_s" in mine:
-        record("bp1-fd.tol3e-5_starts", ", ".join(
-            f"{e.start / YEAR:.2f}" for e in found[0].events(FD_MERGE)),
-            "yr", "as shipped at delta 3e-5 (shipped 1e-5): the three "
-            "events' starts", "bp1-fd-tol3e-5", found[0].folder)
-        record("bp1-fd.tol3e-5_cpu", *duration(mine["cpu_s"]),
-               "as shipped at delta 3e-5: CPU time of one core to the third "
-               "event's end", "bp1-fd-tol3e-5", found[0].folder)
+    # each code one step looser (`cost`): its starts beside the shipped
+    # tolerance's (bp1-fd.switch.starts, bp1-fd.switch.scycle_starts)
+    for name, key, label in (
+            ("scycle-50m-tol1e-6", "bp1-fd.scycle.tol1e-6",
+             "SCycle at 50 m, timeStepTol 1e-6 (shipped 1e-7)"),
+            ("bp1-fd-tol3e-5", "bp1-fd.tol3e-5",
+             "as shipped at delta 3e-5 (shipped 1e-5)")):
+        found = load(work, [(name, name)], key)
+        cpu = cpu_of(work, name)
+        if found and len(found[0].events(FD_MERGE)) == 3 and cpu:
+            record(f"{key}_starts", ", ".join(
+                f"{e.start / YEAR:.2f}" for e in found[0].events(FD_MERGE)),
+                "yr", f"{label}: the three events' starts", name,
+                found[0].folder)
+            record(f"{key}_cpu", *duration(cpu),
+                   f"{label}: CPU time to the third event", name,
+                   found[0].folder)
+
+
+def cpu_of(work, name):
+    """The CPU time [s] of a run in WORK: a peer's from its time.txt, an
+    rsfcycle run's from its JSON file; None if unknown."""
+    if name in PEERS:
+        timing = os.path.join(peer_folder(work, name), "time.txt")
+        return (time_v(timing).get("cpu_s") if os.path.exists(timing)
+                else None)
+    return context_of(work, name).get("cpu_s")
 
 
 def results_bp2(work, record):
@@ -1071,12 +1073,7 @@ def cost_scycle(work, record):
         runs = []
         for name, tol in tolerance.items():
             found = load(work, [(name, name)], "cost")
-            if name in PEERS:
-                timing = os.path.join(peer_folder(work, name), "time.txt")
-                cpu = (time_v(timing).get("cpu_s")
-                       if os.path.exists(timing) else None)
-            else:
-                cpu = context_of(work, name).get("cpu_s")
+            cpu = cpu_of(work, name)
             if not found or not cpu:
                 print(f"{code}: no finished run {name} in {work}")
                 return False

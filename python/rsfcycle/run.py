@@ -146,18 +146,17 @@ def version(folder):
         return f.readline().strip()
 
 
-def wall_time(folder):
-    """TimerOutput's total wall time of the run [s] (log.txt), or None."""
-    with open(_path(folder, "log.txt"), encoding="utf-8") as f:
-        found = re.findall(r"Total wallclock time elapsed since start\s*\|"
-                           r"\s*([0-9.e+]+)s", f.read())
-    return float(found[-1]) if found else None
-
-
 _PROGRESS = re.compile(r"^\*\*\* Step (\d+):.*, wall (\d+)h(\d+)m(\d+)s")
 _RESUMED = re.compile(r"^Resumed from the checkpoint at t = \S+ s, step (\d+)")
 _TOTAL = re.compile(r"Total wallclock time elapsed since start\s*\|"
                     r"\s*([0-9.e+]+)s")
+
+
+def wall_time(folder):
+    """TimerOutput's total wall time of the run [s] (log.txt), or None."""
+    with open(_path(folder, "log.txt"), encoding="utf-8") as f:
+        found = _TOTAL.findall(f.read())
+    return float(found[-1]) if found else None
 
 
 def resumed_wall_time(folder):

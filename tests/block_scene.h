@@ -25,6 +25,14 @@ public:
   double relaxation_time = 0;
   /** The top y = 0.25 m absorbing instead of traction free. */
   bool absorbing_top = false;
+  /** The rate of the mass-proportional damping everywhere [1/s]. */
+  double sponge = 0;
+
+  double
+  sponge_damping(const Point<2> &) const override
+  {
+    return sponge;
+  }
 
   void
   create_coarse_mesh(Triangulation<2> &tria) const override

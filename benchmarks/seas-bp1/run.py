@@ -69,6 +69,11 @@ IMPLICIT = {"Time stepping/Integrator": "implicit",
             "Solver/Linear correction": "multigrid",
             "Solver/Direct factor reuse": "false",
             "Solver/Linear correction cycles": 20}
+# a sponge (Mesh file/Sponge damping, doc/model.md 8.3b): 0 within 40 km
+# of the frictional fault, growing as the square of the distance beyond to
+# 0.5/s at 200 km
+SPONGE = ("0.5 * min(1, max(0, (sqrt(x^2 + max(0, -y - 40e3)^2) - 40e3)"
+          " / 160e3))^2")
 FD3I = dict(FD3, **IMPLICIT)
 FD1I = dict(FD1, **IMPLICIT)
 
@@ -138,6 +143,9 @@ RUNS = {
                   "Courant number 0.5)", "bp1-fd.ie.cost"),
     "bp1-fd-ie-25m": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Mesh/Local refinements": 6}), "the same at 25 m", ""),
+    "bp1-fd-ie-sponge": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
+        "Mesh file/Sponge damping": SPONGE}),
+        "the same with a sponge from 40 km off the fault", ""),
     "bp1-fd-ie-c025": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Time stepping/Courant number": 0.25}),
         "the same, Courant number 0.25", ""),

@@ -59,6 +59,8 @@ YEAR = 3.1536e7  # 365 days: BP3's year, prm/seas-bp3-qd.prm's End time
 THRESHOLD = 1e-3  # m/s, the SEAS event threshold
 MERGE = 60.0  # s
 FD_MERGE = 3600.0  # s: prm/seas-bp3-fd.prm's Event merge time
+SPONGE_WINDOW = 100.0  # s: the surface slip compared with and without it
+SURFACE_SLIP = 0.01  # m: an event that slips the surface by more ruptures it
 COARSE = 800.0  # m: the fault's cells of prm/meshes/seas-bp3-*.msh
 FAR_FIELD = {"g0": 0, "g1": 1, "g2": 2}  # Mesh/Global refinements
 # sin(dip) as prm/seas-bp3-qd.prm writes it in x_d = -y / sin(dip)
@@ -487,6 +489,14 @@ def fd_rows(args):
         add(f"bp3-fd.{key}.start", signed(percent(first.start, o.start), 2),
             "%", f"BP3-FD's first event's start against {label} "
             f"({first.start / YEAR:.2f} against {o.start / YEAR:.2f} yr)", ctx)
+        # BP3-QD's first events may stay below the surface: its peak and
+        # surface slip are those of its first rupture to the surface
+        full = [e for e in other.events if e.jump and e.jump > SURFACE_SLIP]
+        if not full:
+            continue
+        if full[0] is not o:
+            o = full[0]
+            label += f" (its first rupture to the surface, {o.start / YEAR:.2f} yr)"
         add(f"bp3-fd.{key}.peak", signed(percent(first.peak, o.peak), 1),
             "%", f"BP3-FD's first peak slip rate against {label} "
             f"({first.peak:.2f} against {o.peak:.2f} m/s)", ctx)
@@ -494,7 +504,73 @@ def fd_rows(args):
             add(f"bp3-fd.{key}.jump", signed(percent(first.jump, o.jump), 2),
                 "%", f"BP3-FD's first event's slip at the surface against "
                 f"{label} ({first.jump:.3f} against {o.jump:.3f} m)", ctx)
+    back = explicit_until(fd.folder, first)
+    add("bp3-fd.explicit_until", f"{back:.0f}", "s", "BP3-FD: the first "
+        "event's explicit steps end this long after its start (then the "
+        "implicit step)")
+    if args.no_sponge:
+        rows += sponge_rows(fd, first, args.no_sponge, args.cores)
     return rows
+
+
+def explicit_until(folder, event):
+    """How long after the event's start its last explicit step ends [s]
+    (the explicit step is the run's shortest: trials take 4 or more)."""
+    ts = run.time_series(folder)
+    t, dt = ts["time_s"].to_numpy(), ts["step_size_s"].to_numpy()
+    # (the explicit steps go on below the threshold, after the event's end)
+    inside = (t > event.start) & (t <= event.end + FD_MERGE)
+    # the explicit step: the most frequent step of the event
+    sizes, counts = np.unique(dt[inside], return_counts=True)
+    tau_e = sizes[np.argmax(counts)]
+    last = t[inside & np.isclose(dt, tau_e, rtol=1e-9)].max()
+    return last - event.start
+
+
+def sponge_rows(fd, first, folder, cores):
+    """The bp3-fd.sponge.* rows: the first event against a run without
+    the sponge (which need not have ended it): start, peak, and the slip
+    at the surface SPONGE_WINDOW after the start."""
+    other = Run("no-sponge", folder, merge=FD_MERGE)
+    o = other.events[0]
+    ctx, _ = run_of(folder, cores)
+    ends = [r.top[-1, 0] for r in (fd, other)]
+    if min(ends) < first.start + SPONGE_WINDOW:
+        sys.exit(f"{folder}: ends before its first event's start + "
+                 f"{SPONGE_WINDOW:g} s")
+    slips = [at(r.top, e.start + SPONGE_WINDOW, 1) - at(r.top, e.start - 1, 1)
+             for r, e in ((fd, first), (other, o))]
+    # the surface station 8 km off the trace, in the sponge: its
+    # horizontal displacement then
+    shifts = [at(r.surface["+08"], e.start + SPONGE_WINDOW, 1) -
+              at(r.surface["+08"], e.start - 1, 1)
+              for r, e in ((fd, first), (other, o))]
+    back = [explicit_until(r.folder, e) if e.end < r.t_last else None
+            for r, e in ((fd, first), (other, o))]
+    steps = ("; the run without it still took explicit steps "
+             f"{other.t_last - o.start:.0f} s after the start, where it was "
+             "stopped" if back[1] is None else "")
+    return [
+        ("bp3-fd.sponge.start", signed(percent(first.start, o.start), 4), "%",
+         "BP3-FD with the sponge against without, 50 m: the first event's "
+         f"start ({first.start / YEAR:.3f} against {o.start / YEAR:.3f} yr)",
+         ctx, cores),
+        ("bp3-fd.sponge.peak", signed(percent(first.peak, o.peak), 2), "%",
+         "BP3-FD with the sponge against without: the first peak slip rate "
+         f"({first.peak:.2f} against {o.peak:.2f} m/s)", ctx, cores),
+        ("bp3-fd.sponge.jump", signed(percent(*slips), 2), "%",
+         "BP3-FD with the sponge against without: slip at the surface "
+         f"{SPONGE_WINDOW:g} s after the start ({slips[0]:.4f} against "
+         f"{slips[1]:.4f} m)", ctx, cores),
+        ("bp3-fd.sponge.station", signed(percent(*shifts), 2), "%",
+         "BP3-FD with the sponge against without: the surface station at "
+         f"+8 km (in the sponge), its horizontal displacement "
+         f"{SPONGE_WINDOW:g} s after the start ({shifts[0]:.4f} against "
+         f"{shifts[1]:.4f} m)", ctx, cores),
+        ("bp3-fd.sponge.explicit_until", f"{back[0]:.0f}", "s",
+         "BP3-FD with the sponge: explicit steps end this long after the "
+         f"first event's start{steps}", ctx, cores),
+    ]
 
 
 def fd_command(args):
@@ -532,6 +608,11 @@ def variant_entries(dip, sense, cells, far_field, years, problem):
         for name in ("a", "b - a", "Initial state"):
             key = f"Mesh file/Friction/{name}"
             entries[key] = base[key].replace(SIN[60], SIN[dip])
+        if problem == "fd":
+            # the sponge's distance from the fault (its angle)
+            key = "Mesh file/Sponge damping"
+            fd = run.parameters(os.path.join(ROOT, "prm", "seas-bp3-fd.prm"))
+            entries[key] = fd[key].replace("(60 * _pi", f"({dip} * _pi")
     return entries
 
 
@@ -683,6 +764,9 @@ def main(argv=None):
                    "(runs --problem fd)")
     p.add_argument("--qd", help="a BP3-QD run folder with the same cells")
     p.add_argument("--coarse", help="a BP3-FD run folder with coarser cells")
+    p.add_argument("--no-sponge", help="a BP3-FD run folder with the same "
+                   "cells and no sponge (runs --set 'Mesh file/Sponge "
+                   "damping='), run at least 100 s into its first event")
     p.add_argument("--cores", type=int, default=1)
     p.add_argument("--load", help="the machine's load during the run")
     p.add_argument("--dry-run", action="store_true",

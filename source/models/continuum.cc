@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
+#include <algorithm>
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <rsfcycle/models/continuum.h>
 
@@ -50,6 +52,23 @@ namespace rsfcycle
           << tria.n_global_levels() << " levels, "
           << discretisation.dof_handler.n_dofs() << " unknowns, "
           << contact.n_global_nodes() << " contact nodes\n";
+      // the sponge (Scene::sponge_damping): its cells and largest rate
+      unsigned int n_sponge  = 0;
+      double       alpha_max = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          if (const double alpha = scene.sponge_damping(cell->center());
+              alpha > 0)
+            {
+              ++n_sponge;
+              alpha_max = std::max(alpha_max, alpha);
+            }
+      const MPI_Comm comm = tria.get_communicator();
+      if (dealii::Utilities::MPI::sum(n_sponge, comm) > 0)
+        out << "Sponge damping: " << dealii::Utilities::MPI::sum(n_sponge, comm)
+            << " cells, alpha up to "
+            << dealii::Utilities::MPI::max(alpha_max, comm)
+            << " 1/s (C += alpha M)\n";
     }
 
 

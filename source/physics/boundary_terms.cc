@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
-// The lumped boundary terms of Discretisation's matrices: the contact's
-// radiation damping and shear prestress, the absorbing faces' dashpots.
+// The lumped terms of Discretisation's matrices: the contact's radiation
+// damping and shear prestress, the absorbing faces' dashpots, the sponge.
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -129,6 +129,64 @@ namespace rsfcycle
 
 
     // both terms for the active and the level cells of both dimensions
+    /**
+     * The sponge (Scene::sponge_damping): C += alpha M lumped, the row sums
+     * of each cell's alpha M condensed like a load (at a hanging node a
+     * cell's diagonal would otherwise couple the node's parents) and added
+     * to C's diagonal, so that the implicit and the explicit step take the
+     * same diagonal damping. (The multigrid's level matrices leave it out:
+     * they only precondition.)
+     */
+    template <int dim>
+    void
+    Discretisation<dim>::add_sponge(
+      FEValues<dim>                        &fe_values,
+      std::array<FullMatrix<double>, 3>    &cell,
+      std::vector<types::global_dof_index> &dof_indices)
+    {
+      la::Vector sponge;
+      reinit(sponge);
+      bool           any = false;
+      Vector<double> cell_force(fe.n_dofs_per_cell()),
+        cell_sponge(fe.n_dofs_per_cell());
+      for (const auto &active_cell : dof_handler.active_cell_iterators())
+        if (active_cell->is_locally_owned())
+          if (const double alpha = scene.sponge_damping(active_cell->center());
+              alpha != 0)
+            {
+              any = true;
+              cell_matrices(active_cell, fe_values, cell, cell_force);
+              for (unsigned int i = 0; i < cell_sponge.size(); ++i)
+                {
+                  cell_sponge(i) = 0;
+                  for (unsigned int j = 0; j < cell_sponge.size(); ++j)
+                    cell_sponge(i) += alpha * cell[0](i, j);
+                }
+              active_cell->get_dof_indices(dof_indices);
+              hanging_constraints.distribute_local_to_global(cell_sponge,
+                                                             dof_indices,
+                                                             sponge);
+            }
+      sponge.compress(VectorOperation::add);
+      if (!Utilities::MPI::logical_or(any, triangulation.get_communicator()))
+        return;
+      for (const auto row : sponge.locally_owned_elements())
+        if (sponge[row] != 0)
+          viscosity_matrix.add(row, row, sponge[row]);
+      viscosity_matrix.compress(VectorOperation::add);
+    }
+
+
+    template void
+    Discretisation<2>::add_sponge(FEValues<2> &,
+                                  std::array<FullMatrix<double>, 3> &,
+                                  std::vector<types::global_dof_index> &);
+    template void
+    Discretisation<3>::add_sponge(FEValues<3> &,
+                                  std::array<FullMatrix<double>, 3> &,
+                                  std::vector<types::global_dof_index> &);
+
+
 #define RSFCYCLE_BOUNDARY_TERMS(dim, Iterator)            \
   template void Discretisation<dim>::add_contact_terms(   \
     const DoFHandler<dim>::Iterator &,                    \

@@ -225,7 +225,8 @@ namespace rsfcycle
 
     /**
      * Mass M (density), viscosity C (Kelvin-Voigt, shear and bulk
-     * viscosity) and stiffness K (bulk modulus, Poisson ratio). A stress of
+     * viscosity; the sponge's alpha M) and stiffness K (bulk modulus,
+     * Poisson ratio). A stress of
      * "the same form" is lambda tr(e) I + 2 mu e with
      * lambda = bulk - 2/3 shear.
      */
@@ -366,6 +367,7 @@ namespace rsfcycle
       for (auto *matrix : {&mass_matrix, &viscosity_matrix, &stiffness_matrix})
         matrix->compress(VectorOperation::add);
       body_force.compress(VectorOperation::add);
+      add_sponge(fe_values, cell, dof_indices);
 
       // the shear prestress, kept apart from gravity: the gravity
       // equilibrium (frictionless base) must not see it

@@ -52,6 +52,7 @@ namespace rsfcycle
         refine_zone =
           FrictionField<dim>::parse_expression(prm.get("Refine zone"),
                                                section + "/Refine zone");
+      const std::string sponge_text      = prm.get("Sponge damping");
       const std::string observation_text = prm.get("Observation points");
       all_components = prm.get("Observation components") == "all";
       prm.enter_subsection("Friction");
@@ -81,6 +82,7 @@ namespace rsfcycle
              ": must not be zero (its magnitude is the plate rate v0)");
 
       read_mesh(file);
+      read_sponge(prm, sponge_text);
       assign_roles(roles);
       sample_patch(n_refinements);
       check_seas_positions(prm);
@@ -376,6 +378,41 @@ namespace rsfcycle
     {
       return friction_field->radiation_damping(to_physical(p))
         .value_or(Scene<dim>::radiation_damping(p, material));
+    }
+
+
+    /**
+     * Sponge damping: an expression, a dynamic run, >= 0 at the coarse
+     * mesh's vertices (before the rotation: in the mesh's frame).
+     */
+    template <int dim>
+    void
+    MeshFile<dim>::read_sponge(ParameterHandler &prm, const std::string &text)
+    {
+      if (text.empty())
+        return;
+      sponge =
+        FrictionField<dim>::parse_expression(text, section + "/Sponge damping");
+      prm.enter_subsection("Solver");
+      const std::string dynamics = prm.get("Dynamics");
+      prm.leave_subsection();
+      if (dynamics != "dynamic")
+        fail("Sponge damping",
+             ": needs Solver/Dynamics = dynamic (this run has " + dynamics +
+               "; without inertia there are no waves to absorb)");
+      for (const Point<dim> &x : coarse.get_vertices())
+        if (const double alpha = sponge->value(x); !(alpha >= 0))
+          fail("Sponge damping",
+               " = " + format_number(alpha) + " at " +
+                 format_point(&x[0], dim) + ": must be >= 0 [1/s]");
+    }
+
+
+    template <int dim>
+    double
+    MeshFile<dim>::sponge_damping(const Point<dim> &p) const
+    {
+      return sponge ? sponge->value(to_physical(p)) : 0.;
     }
 
 

@@ -251,6 +251,19 @@ namespace rsfcycle
                           "[m/s^2]; it loads the contact (normal stress) and "
                           "defines 'up' for the observation points and the "
                           "dip direction");
+        prm.declare_entry(
+          "Sponge damping",
+          "",
+          Patterns::Anything(),
+          "The rate alpha [1/s] of a mass-proportional damping of the body, "
+          "a function of x, y (and z) [m] in the mesh's coordinates "
+          "(muparser): the momentum balance gets the force -alpha rho v "
+          "per volume, under which a wave decays as exp(-alpha t / 2). A "
+          "sponge around the refined zone absorbs the waves of an event "
+          "that the coarsening cells would send back (they carry no wave "
+          "shorter than a few cells to the absorbing boundaries); keep it "
+          "zero where the rupture's own waves matter (doc/model.md 8.3b). "
+          "Needs Solver/Dynamics = dynamic. Empty: none");
         prm.declare_entry("Load velocity",
                           "-50e-6, 0",
                           Patterns::List(Patterns::Double(), 1, 3),

@@ -118,6 +118,8 @@ check_bp1 free-normal-antiplane "Contact normal = free: not with Displacement = 
 check_bp1 green-integrator "Integrator = runge-kutta or implicit" 'subsection Time stepping\nset Integrator = arkode\nend'
 check_bp1 green-viscosity "shear viscosity" 'subsection Mesh file\nset Materials = 10: density 1335, bulk modulus 26.69843e9, Poisson ratio 0.25, shear viscosity 1e12, bulk viscosity 0\nend'
 check_bp1 green-ramp "Ramp time" 'subsection Mesh file\nset Ramp time = 3e7\nend'
+check_bp1 sponge-quasi-dynamic "Sponge damping: needs Solver/Dynamics = dynamic" 'subsection Mesh file\nset Sponge damping = 1\nend'
+check_bp1 sponge-negative "Sponge damping = -1 at" 'subsection Solver\nset Dynamics = dynamic\nend\nsubsection Mesh file\nset Sponge damping = -1\nend'
 # (these two need the assembled matrices: refused after the set-up, still
 # before the run folder is touched)
 check_bp1 green-cohesion "Cohesion = 0" 'subsection Mesh file\nsubsection Friction\nset Cohesion = 1e5\nend\nend'

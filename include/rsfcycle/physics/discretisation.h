@@ -129,6 +129,15 @@ namespace rsfcycle
       assemble_matrices();
 
       /**
+       * The sponge's alpha M, lumped after the hanging nodes' condensation,
+       * added to C's diagonal (assemble_matrices' work arrays passed on).
+       */
+      void
+      add_sponge(FEValues<dim>                        &fe_values,
+                 std::array<FullMatrix<double>, 3>    &cell,
+                 std::vector<types::global_dof_index> &dof_indices);
+
+      /**
        * M, C, K and the gravity load of one cell, active or on a multigrid
        * level (the material is found from the cell centre).
        */

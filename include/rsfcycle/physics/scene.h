@@ -144,6 +144,18 @@ namespace rsfcycle
       }
 
       /**
+       * The rate alpha [1/s] of the mass-proportional damping at a point
+       * of the body (rotated frame): the momentum balance gets the force
+       * -alpha rho v (C += alpha M), so a wave decays as exp(-alpha t / 2)
+       * where it is positive. 0 (the default): none.
+       */
+      virtual double
+      sponge_damping(const Point<dim> &) const
+      {
+        return 0;
+      }
+
+      /**
        * The compressive normal stress |sigma_n| [Pa] on the contact as a
        * function of the point (rotated frame), constant in time; an empty
        * function (the default): the normal stress of the gravity

@@ -98,6 +98,8 @@ namespace rsfcycle
       radiation_damping(const Point<dim> &p,
                         const Material   &material) const override;
       double
+      sponge_damping(const Point<dim> &p) const override;
+      double
       convergence_rate() const override;
       std::vector<std::pair<std::string, Point<dim>>>
       observation_points() const override;
@@ -140,6 +142,8 @@ namespace rsfcycle
       Tensor<1, dim>                         g, up, load_velocity;
       /** `Refine where` (null: b - a > 0). */
       std::shared_ptr<const Function<dim>> refine_where;
+      /** Sponge damping (empty: none). */
+      std::shared_ptr<const Function<dim>> sponge;
       std::shared_ptr<const Function<dim>> refine_zone;
       /** Displacement = antiplane: load_velocity[0] is out of the plane. */
       bool antiplane = false;
@@ -159,6 +163,9 @@ namespace rsfcycle
 
       void
       read_mesh(const std::string &file);
+      /** Parse and check `Sponge damping` (after read_mesh()). */
+      void
+      read_sponge(ParameterHandler &prm, const std::string &text);
       void
       assign_roles(const std::map<types::boundary_id, std::string> &roles);
       void

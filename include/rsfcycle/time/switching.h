@@ -42,12 +42,10 @@ namespace rsfcycle
      * mesh traps after an event ring on, and the error estimate follows
      * them with short steps, until they are damped by the trials' implicit
      * steps (generalized-alpha with Spectral radius < 1 damps the waves
-     * whose period is a few of its steps, also below R tau_e: after a
-     * rupture at 50 m in SEAS BP3-FD's thrust, trials that ended below R
-     * tau_e kept the run explicit for minutes of simulated time, those that
-     * go on from 4 tau_e returned to implicit steps at the first trial from
-     * a checkpoint minutes after it; in the first minute and a half the
-     * waves hold every trial at 4 tau_e).
+     * whose period is a few of its steps, also below R tau_e). Waves that
+     * a coarsening mesh sends back for minutes need a sponge (Mesh
+     * file/Sponge damping): without one they held every trial at 4 tau_e
+     * after SEAS BP3-FD's rupture at 50 m.
      *
      * Every decision counts steps, so a run is the same on any number of
      * ranks and after a resume. A model without an explicit step (viscous
@@ -168,13 +166,16 @@ namespace rsfcycle
             implicit->restore(memory);
             return;
           }
-        explicit_mode = memory.values[0] != 0;
+        // (a checkpoint of explicit steps resumed by a run whose explicit
+        // step is refused goes on with the implicit step, as the log says)
+        explicit_mode = memory.values[0] != 0 && refusal.empty();
         countdown     = static_cast<unsigned int>(memory.values[1]);
         interval      = static_cast<unsigned int>(memory.values[2]);
-        trial         = static_cast<unsigned int>(memory.values[3]);
+        trial =
+          refusal.empty() ? static_cast<unsigned int>(memory.values[3]) : 0;
         implicit_model.limit_fixed_point_iterations(
           trial > 0 ? trial_iterations : 0);
-        if (!explicit_mode)
+        if (memory.values[0] == 0)
           {
             IntegratorMemory<State> inner = memory;
             inner.controller = memory.controller.substr(prefix.size());

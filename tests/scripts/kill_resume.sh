@@ -15,6 +15,9 @@
 # BP3-QD's split fault in the volume method (its normal stress output; with
 # the exact direct correction and with Direct factor reuse), and
 # for Integrator = implicit-explicit (killed among its explicit steps).
+# A checkpoint taken among explicit steps and resumed with a Kelvin-Voigt
+# viscosity in parameters.prm (the explicit step refused) goes on with the
+# implicit step and says so in its log.
 # Usage: kill_resume.sh RSFCYCLE SOURCE_DIR WORK_DIR
 set -u
 exe=$1; src=$2; work=$3
@@ -205,3 +208,15 @@ check_resume green-function make_green_prm
 check_resume split-volume make_split_prm
 check_resume split-volume-reuse make_split_reuse_prm
 check_resume implicit-explicit make_implicit_explicit_prm
+
+# among explicit steps, resumed with the explicit step refused
+make_implicit_explicit_prm viscous
+start_and_wait viscous
+kill -9 $pid 2>/dev/null || fail "run viscous ended before it could be killed"
+wait $pid 2>/dev/null
+sed -i 's/shear viscosity 0,/shear viscosity 1e12,/' viscous/parameters.prm
+grep -q "shear viscosity 1e12" viscous/parameters.prm || fail "no material to make viscous"
+"$exe" --resume viscous > viscous-2.log 2>&1 || fail "resume with the explicit step refused"
+grep -q "implicit steps only: the damping matrix C couples" viscous-2.log ||
+  fail "the resumed log does not say that the explicit step is refused"
+echo "implicit-explicit: resumed among explicit steps with the explicit step refused: implicit steps"

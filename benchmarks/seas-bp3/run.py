@@ -465,8 +465,6 @@ def fd_rows(args):
         add("bp3-fd.cost", *bench.duration(wall),
             f"BP3-FD: wall time to {fd.t_last / YEAR:.0f} yr, one rank "
             "(resumed segments summed)")
-    add("bp3-fd.peer", "none", "", "BP3-FD: no peer run; rsfcycle's "
-        "BP3-QD and a coarser run instead")
     intervals = catalog.intervals(fd.events)
     add("bp3-fd.recurrence", "no peer; intervals " + ", ".join(
         f"{x / YEAR:.2f}" for x in intervals) + " yr" if intervals else
@@ -489,6 +487,13 @@ def fd_rows(args):
         add(f"bp3-fd.{key}.start", signed(percent(first.start, o.start), 2),
             "%", f"BP3-FD's first event's start against {label} "
             f"({first.start / YEAR:.2f} against {o.start / YEAR:.2f} yr)", ctx)
+        if key == "coarse":
+            ended = [e for e in other.events if e.end < other.t_last - FD_MERGE]
+            add("bp3-fd.coarse.events", f"{len(ended)} in "
+                f"{other.t_last / YEAR:.0f} yr", "", f"BP3-FD at {size:g} m: "
+                "events of the run (starts " + ", ".join(
+                    f"{e.start / YEAR:.2f}" for e in ended) + " yr; peaks " +
+                ", ".join(f"{e.peak:.2f}" for e in ended) + " m/s)", ctx)
         # BP3-QD's first events may stay below the surface: its peak and
         # surface slip are those of its first rupture to the surface
         full = [e for e in other.events if e.jump and e.jump > SURFACE_SLIP]
@@ -534,8 +539,8 @@ def sponge_rows(fd, first, folder, cores):
     other = Run("no-sponge", folder, merge=FD_MERGE)
     o = other.events[0]
     ctx, _ = run_of(folder, cores)
-    ends = [r.top[-1, 0] for r in (fd, other)]
-    if min(ends) < first.start + SPONGE_WINDOW:
+    if min(r.top[-1, 0] - e.start
+           for r, e in ((fd, first), (other, o))) < SPONGE_WINDOW:
         sys.exit(f"{folder}: ends before its first event's start + "
                  f"{SPONGE_WINDOW:g} s")
     slips = [at(r.top, e.start + SPONGE_WINDOW, 1) - at(r.top, e.start - 1, 1)
@@ -545,11 +550,9 @@ def sponge_rows(fd, first, folder, cores):
     shifts = [at(r.surface["+08"], e.start + SPONGE_WINDOW, 1) -
               at(r.surface["+08"], e.start - 1, 1)
               for r, e in ((fd, first), (other, o))]
-    back = [explicit_until(r.folder, e) if e.end < r.t_last else None
-            for r, e in ((fd, first), (other, o))]
-    steps = ("; the run without it still took explicit steps "
-             f"{other.t_last - o.start:.0f} s after the start, where it was "
-             "stopped" if back[1] is None else "")
+    # without the sponge: how long its explicit steps went on
+    back = explicit_until(other.folder, o)
+    still = back > other.t_last - o.start - 1
     return [
         ("bp3-fd.sponge.start", signed(percent(first.start, o.start), 4), "%",
          "BP3-FD with the sponge against without, 50 m: the first event's "
@@ -567,9 +570,10 @@ def sponge_rows(fd, first, folder, cores):
          f"+8 km (in the sponge), its horizontal displacement "
          f"{SPONGE_WINDOW:g} s after the start ({shifts[0]:.4f} against "
          f"{shifts[1]:.4f} m)", ctx, cores),
-        ("bp3-fd.sponge.explicit_until", f"{back[0]:.0f}", "s",
-         "BP3-FD with the sponge: explicit steps end this long after the "
-         f"first event's start{steps}", ctx, cores),
+        ("bp3-fd.sponge.explicit_until", f"{back:.0f}", "s",
+         "BP3-FD without the sponge: its explicit steps after the first "
+         "event's start " + ("went on until it was stopped" if still else
+                             "ended"), ctx, cores),
     ]
 
 

@@ -225,8 +225,8 @@ namespace rsfcycle
 
     /**
      * Mass M (density), viscosity C (Kelvin-Voigt, shear and bulk
-     * viscosity; the sponge's alpha M) and stiffness K (bulk modulus,
-     * Poisson ratio). A stress of
+     * viscosity; the sponge is added after the condensation, add_sponge)
+     * and stiffness K (bulk modulus, Poisson ratio). A stress of
      * "the same form" is lambda tr(e) I + 2 mu e with
      * lambda = bulk - 2/3 shear.
      */

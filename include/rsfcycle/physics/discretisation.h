@@ -123,7 +123,7 @@ namespace rsfcycle
       /**
        * M, C, K and the load (gravity, the scene's shear prestress on the
        * contact), with hanging nodes condensed; C holds the radiation
-       * damping on the contact if it is on.
+       * damping on the contact if it is on, and the sponge (add_sponge).
        */
       void
       assemble_matrices();

@@ -484,7 +484,8 @@ def fd_rows(args):
             continue
         o = other.events[0]
         size = element_size(flag)
-        ctx, _ = run_of(flag, args.cores)
+        ctx, _ = run_of(flag, args.cores,
+                        args.load if key == "coarse" else None)
         label = f"{what} at {size:g} m" if size else what
         add(f"bp3-fd.{key}.start", signed(percent(first.start, o.start), 2),
             "%", f"BP3-FD's first event's start against {label} "
@@ -496,6 +497,11 @@ def fd_rows(args):
                 "events of the run (starts " + ", ".join(
                     f"{e.start / YEAR:.2f}" for e in ended) + " yr; peaks " +
                 ", ".join(f"{e.peak:.2f}" for e in ended) + " m/s)", ctx)
+            wall = run.resumed_wall_time(flag)
+            if wall:
+                add("bp3-fd.coarse.cost", *bench.duration(wall),
+                    f"BP3-FD at {size:g} m: wall time to "
+                    f"{other.t_last / YEAR:.0f} yr, one rank", ctx)
         # BP3-QD's first events may stay below the surface: its peak and
         # surface slip are those of its first rupture to the surface
         full = [e for e in other.events if e.jump and e.jump > SURFACE_SLIP]

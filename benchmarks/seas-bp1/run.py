@@ -146,6 +146,12 @@ RUNS = {
     "bp1-fd-ie-sponge": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Mesh file/Sponge damping": SPONGE}),
         "the same with a sponge from 40 km off the fault", ""),
+    "bp1-fd-ie-d5": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
+        "Mesh/Refinement distance": 5}),
+        "the same with the bulk refined 5 cells out (shipped: 4)", ""),
+    "bp1-fd-ie-d6": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
+        "Mesh/Refinement distance": 6}),
+        "the same with the bulk refined 6 cells out (shipped: 4)", ""),
     "bp1-fd-ie-c025": ("seas-bp1-fd.prm", dict(FD1, **IE, **{
         "Time stepping/Courant number": 0.25}),
         "the same, Courant number 0.25", ""),
@@ -572,26 +578,47 @@ PYTHONPATH=python python3 -m rsfcycle.results write benchmarks/seas-bp1"""
 
 def results_fd_ie(work, record):
     """BP1-FD's first event with explicit steps inside it: its figures
-    (SCycle's are in the rows bp1-fd.*) and its cost against the implicit
-    step's (bp1-fd-wp-1e-5, the same first event)."""
+    (SCycle's are in the rows bp1-fd.*), its cost against the implicit
+    step's (bp1-fd-wp-1e-5, the same first event), and against the implicit
+    step throughout with the same lumped mass (bp1-fd-implicit-lumped),
+    which tells the explicit steps' part of the gap to SCycle from the
+    lumped mass's."""
     for name, label in (("bp1-fd-ie", "Courant number 0.5"),
                         ("bp1-fd-ie-c025", "Courant number 0.25"),
-                        ("bp1-fd-ie-25m", "25 m, Courant number 0.5")):
+                        ("bp1-fd-ie-25m", "25 m, Courant number 0.5"),
+                        ("bp1-fd-ie-d5", "Refinement distance 5"),
+                        ("bp1-fd-ie-d6", "Refinement distance 6"),
+                        ("bp1-fd-implicit-lumped", "implicit step, lumped "
+                         "mass")):
         found = load(work, [(name, label)], name)
         if not found:
             continue
         key = name.replace("bp1-fd-", "bp1-fd.")
+        if name == "bp1-fd-implicit-lumped":
+            # the explicit steps' path against the implicit step on the same
+            # mesh and mass: what the explicit steps change
+            ie = load(work, [("bp1-fd-ie", "Courant number 0.5")], key)
+            if ie:
+                record_gaps(record, lambda f: f"{key}.ie_{f}",
+                            "implicit-explicit against the implicit step "
+                            "throughout, both with the lumped mass: first "
+                            "event's {text}", first_event(ie[0]),
+                            first_event(found[0]), name, found[0].folder,
+                            ("start", "peak", "jump"), 2)
         # (bp1-fd-ie is the shipped file's first event, whose figures are
         # the rows bp1-fd.*: only its cost here)
         peer = load(work, [("scycle-50m", "SCycle 50 m")], key + ".scycle")
         if peer and name != "bp1-fd-ie":
+            path = ("implicit step throughout, lumped mass"
+                    if name == "bp1-fd-implicit-lumped" else
+                    f"implicit-explicit, {label}")
             record_gaps(record, lambda f: f"{key}.scycle_{f}",
-                        f"implicit-explicit, {label}: first event's {{text}} "
+                        f"{path}: first event's {{text}} "
                         "against SCycle's at 50 m", first_event(found[0]),
                         first_event(peer[0]), name, found[0].folder,
                         ("peak", "jump"), 1)
         mine = context_of(work, name, found[0].folder)
-        if "cpu_s" in mine:
+        if "cpu_s" in mine and name != "bp1-fd-implicit-lumped":
             cpu = int(round(mine["cpu_s"]))
             record(f"{key}.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
                    f"implicit-explicit, {label}: CPU time of one core to "

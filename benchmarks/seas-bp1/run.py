@@ -583,54 +583,52 @@ def results_fd_ie(work, record):
     step throughout with the same lumped mass (bp1-fd-implicit-lumped),
     which tells the explicit steps' part of the gap to SCycle from the
     lumped mass's."""
-    for name, label in (("bp1-fd-ie", "Courant number 0.5"),
-                        ("bp1-fd-ie-c025", "Courant number 0.25"),
-                        ("bp1-fd-ie-25m", "25 m, Courant number 0.5"),
-                        ("bp1-fd-ie-d5", "Refinement distance 5"),
-                        ("bp1-fd-ie-d6", "Refinement distance 6"),
-                        ("bp1-fd-implicit-lumped", "implicit step, lumped "
-                         "mass")):
-        found = load(work, [(name, label)], name)
+    for name, path in (
+            ("bp1-fd-ie", "implicit-explicit, Courant number 0.5"),
+            ("bp1-fd-ie-c025", "implicit-explicit, Courant number 0.25"),
+            ("bp1-fd-ie-25m", "implicit-explicit, 25 m, Courant number 0.5"),
+            ("bp1-fd-ie-d5", "implicit-explicit, Refinement distance 5"),
+            ("bp1-fd-ie-d6", "implicit-explicit, Refinement distance 6"),
+            ("bp1-fd-implicit-lumped",
+             "implicit step throughout, lumped mass")):
+        found = load(work, [(name, path)], name)
         if not found:
             continue
         key = name.replace("bp1-fd-", "bp1-fd.")
-        if name == "bp1-fd-implicit-lumped":
-            # the explicit steps' path against the implicit step on the same
-            # mesh and mass: what the explicit steps change
-            ie = load(work, [("bp1-fd-ie", "Courant number 0.5")], key)
-            if ie:
-                record_gaps(record, lambda f: f"{key}.ie_{f}",
-                            "implicit-explicit against the implicit step "
-                            "throughout, both with the lumped mass: first "
-                            "event's {text}", first_event(ie[0]),
-                            first_event(found[0]), name, found[0].folder,
-                            ("start", "peak", "jump"), 2)
         # (bp1-fd-ie is the shipped file's first event, whose figures are
         # the rows bp1-fd.*: only its cost here)
         peer = load(work, [("scycle-50m", "SCycle 50 m")], key + ".scycle")
         if peer and name != "bp1-fd-ie":
-            path = ("implicit step throughout, lumped mass"
-                    if name == "bp1-fd-implicit-lumped" else
-                    f"implicit-explicit, {label}")
             record_gaps(record, lambda f: f"{key}.scycle_{f}",
                         f"{path}: first event's {{text}} "
                         "against SCycle's at 50 m", first_event(found[0]),
                         first_event(peer[0]), name, found[0].folder,
                         ("peak", "jump"), 1)
         mine = context_of(work, name, found[0].folder)
-        if "cpu_s" in mine and name != "bp1-fd-implicit-lumped":
+        if "cpu_s" in mine:
             cpu = int(round(mine["cpu_s"]))
             record(f"{key}.cost", f"{cpu // 60} min {cpu % 60:02d}", "s",
-                   f"implicit-explicit, {label}: CPU time of one core to "
+                   f"{path}: CPU time of one core to "
                    "the first event's end", name, found[0].folder)
             implicit = context_of(work, "bp1-fd-wp-1e-5")
             if "cpu_s" in implicit:
                 record(f"{key}.cost_ratio",
                        f"{mine['cpu_s'] / implicit['cpu_s']:.2f}", "x",
-                       f"implicit-explicit, {label}: CPU time over the "
+                       f"{path}: CPU time over the "
                        "implicit step's (bp1-fd-wp-1e-5) to the first "
                        "event's end", name, found[0].folder)
-
+    # the explicit steps' path against the implicit step on the same mesh
+    # and mass: what the explicit steps change
+    both = load(work, [("bp1-fd-ie", "implicit-explicit"),
+                       ("bp1-fd-implicit-lumped", "implicit, lumped mass")],
+                "bp1-fd.implicit-lumped")
+    if len(both) == 2:
+        record_gaps(record, lambda f: f"bp1-fd.implicit-lumped.ie_{f}",
+                    "implicit-explicit against the implicit step "
+                    "throughout, both with the lumped mass: first event's "
+                    "{text}", first_event(both[0]), first_event(both[1]),
+                    "bp1-fd-implicit-lumped", both[1].folder,
+                    ("start", "peak", "jump"), 2)
 
 def results_fd_switch(work, record):
     """BP1-FD as shipped (bp1-fd: explicit steps inside the events) to its

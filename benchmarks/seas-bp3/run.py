@@ -25,7 +25,7 @@ From the repository's root, with the package on the path:
            WORK/equal; each code's cheapest run whose catalogue is unchanged
            (rsfcycle.equal), the ratio of the costs into results.csv
   fd       the bp3-fd.* rows: a BP3-FD run's events, its first against
-           BP3-QD's and a coarser BP3-FD run's (--dry-run prints them)
+           BP3-QD's and coarser and finer BP3-FD runs' (--dry-run prints them)
   tandem   run tandem on BP3-QD (tandem/run.sh: builds it under
            TANDEM_PREFIX once, about 25 min, then meshes, runs, converts)
 
@@ -441,8 +441,8 @@ def results_command(args):
 def fd_rows(args):
     """[(key, value, unit, description, context, cores)] of the `fd`
     command: the BP3-FD run's events (merged within FD_MERGE), each
-    ended before the run, against BP3-QD's first event and a coarser
-    BP3-FD run's."""
+    ended before the run, against BP3-QD's first event and a coarser and
+    a finer BP3-FD run's."""
     fd = Run("rsfcycle", args.fd, merge=FD_MERGE)
     fd.events = [e for e in fd.events if e.end < fd.t_last - FD_MERGE]
     if not fd.events:
@@ -466,7 +466,7 @@ def fd_rows(args):
             f"BP3-FD: wall time to {fd.t_last / YEAR:.0f} yr, one rank "
             "(resumed segments summed)")
     add("bp3-fd.peer", "none", "", "BP3-FD: no peer run; rsfcycle's "
-        "BP3-QD and a coarser run instead")
+        "BP3-QD and coarser and finer runs instead")
     intervals = catalog.intervals(fd.events)
     add("bp3-fd.recurrence", "no peer; intervals " + ", ".join(
         f"{x / YEAR:.2f}" for x in intervals) + " yr" if intervals else
@@ -475,33 +475,39 @@ def fd_rows(args):
         f"{e.peak:.2f}" for e in fd.events) + " m/s", "",
         "BP3-FD: peak slip rates")
     first = fd.events[0]
+    loads = {"qd": None, "coarse": args.load, "fine": args.fine_load}
     for flag, key, what in ((args.qd, "qd", "BP3-QD's"),
-                            (args.coarse, "coarse", "the coarser run's")):
+                            (args.coarse, "coarse", "the coarser run's"),
+                            (args.fine, "fine", "the finer run's")):
         if not flag:
             continue
-        other = Run(key, flag, merge=FD_MERGE if key == "coarse" else MERGE)
+        other = Run(key, flag, merge=MERGE if key == "qd" else FD_MERGE)
+        if key == "fine":
+            # the finer run need only have ended its first event
+            other.events = [e for e in other.events
+                            if e.end < other.t_last - FD_MERGE]
         if not other.events:
             continue
         o = other.events[0]
         size = element_size(flag)
-        ctx, _ = run_of(flag, args.cores,
-                        args.load if key == "coarse" else None)
+        ctx, _ = run_of(flag, args.cores, loads[key])
         label = f"{what} at {size:g} m" if size else what
         add(f"bp3-fd.{key}.start", signed(percent(first.start, o.start), 2),
             "%", f"BP3-FD's first event's start against {label} "
             f"({first.start / YEAR:.2f} against {o.start / YEAR:.2f} yr)", ctx)
-        if key == "coarse":
+        if key != "qd":
             ended = [e for e in other.events if e.end < other.t_last - FD_MERGE]
-            add("bp3-fd.coarse.events", f"{len(ended)} in "
+            add(f"bp3-fd.{key}.events", f"{len(ended)} in "
                 f"{other.t_last / YEAR:.0f} yr", "", f"BP3-FD at {size:g} m: "
                 "events of the run (starts " + ", ".join(
                     f"{e.start / YEAR:.2f}" for e in ended) + " yr; peaks " +
                 ", ".join(f"{e.peak:.2f}" for e in ended) + " m/s)", ctx)
             wall = run.resumed_wall_time(flag)
             if wall:
-                add("bp3-fd.coarse.cost", *bench.duration(wall),
+                add(f"bp3-fd.{key}.cost", *bench.duration(wall),
                     f"BP3-FD at {size:g} m: wall time to "
-                    f"{other.t_last / YEAR:.0f} yr, one rank", ctx)
+                    f"{other.t_last / YEAR:.0f} yr, one rank (resumed "
+                    "segments summed)", ctx)
         # BP3-QD's first events may stay below the surface: its peak and
         # surface slip are those of its first rupture to the surface
         full = [e for e in other.events if e.jump and e.jump > SURFACE_SLIP]
@@ -770,12 +776,17 @@ def main(argv=None):
     p.set_defaults(handler=results_command)
 
     p = sub.add_parser("fd", help="the bp3-fd.* rows of results.csv: a "
-                       "BP3-FD run's events against BP3-QD's and a coarser "
-                       "BP3-FD run's first event")
+                       "BP3-FD run's events against BP3-QD's and coarser "
+                       "and finer BP3-FD runs' first event")
     p.add_argument("--fd", required=True, help="the BP3-FD run folder "
                    "(runs --problem fd)")
     p.add_argument("--qd", help="a BP3-QD run folder with the same cells")
     p.add_argument("--coarse", help="a BP3-FD run folder with coarser cells")
+    p.add_argument("--fine", help="a BP3-FD run folder with finer cells, "
+                   "run at least to its first event's end (the bp3-fd.fine.* "
+                   "rows)")
+    p.add_argument("--fine-load", help="the machine's load during the "
+                   "finer run")
     p.add_argument("--no-sponge", help="a BP3-FD run folder with the same "
                    "cells and no sponge (runs --set 'Mesh file/Sponge "
                    "damping='), run at least 100 s into its first event")

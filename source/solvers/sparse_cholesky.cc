@@ -102,6 +102,32 @@ namespace rsfcycle
     };
 
 
+    namespace
+    {
+      /** A CHOLMOD copy of the upper triangle in compressed columns. */
+      cholmod_sparse *
+      upper_triangle(const std::vector<int>    &p,
+                     const std::vector<int>    &i,
+                     const std::vector<double> &x,
+                     cholmod_common            &common)
+      {
+        const std::size_t n = p.size() - 1;
+        cholmod_sparse   *S = cholmod_allocate_sparse(n,
+                                                    n,
+                                                    x.size(),
+                                                    /*sorted*/ 0,
+                                                    /*packed*/ 1,
+                                                    /*stype*/ 1,
+                                                    CHOLMOD_REAL,
+                                                    &common);
+        std::copy(p.begin(), p.end(), static_cast<int *>(S->p));
+        std::copy(i.begin(), i.end(), static_cast<int *>(S->i));
+        std::copy(x.begin(), x.end(), static_cast<double *>(S->x));
+        return S;
+      }
+    } // namespace
+
+
     SparseCholesky::SparseCholesky()
       : data(std::make_unique<Data>())
     {}
@@ -136,19 +162,8 @@ namespace rsfcycle
                               const std::vector<int>    &i,
                               const std::vector<double> &x)
     {
-      const std::size_t n   = p.size() - 1;
-      const std::size_t nnz = x.size();
-      cholmod_sparse   *S   = cholmod_allocate_sparse(n,
-                                                  n,
-                                                  nnz,
-                                                  /*sorted*/ 0,
-                                                  /*packed*/ 1,
-                                                  /*stype*/ 1,
-                                                  CHOLMOD_REAL,
-                                                  &data->common);
-      std::copy(p.begin(), p.end(), static_cast<int *>(S->p));
-      std::copy(i.begin(), i.end(), static_cast<int *>(S->i));
-      std::copy(x.begin(), x.end(), static_cast<double *>(S->x));
+      const std::size_t n = p.size() - 1;
+      cholmod_sparse   *S = upper_triangle(p, i, x, data->common);
 
       const bool same_pattern = data->factor != nullptr &&
                                 p == data->analysed_p && i == data->analysed_i;
@@ -317,6 +332,84 @@ namespace rsfcycle
       const auto *values = static_cast<const double *>(X->x);
       std::copy(values, values + data->n, x.begin());
       cholmod_free_dense(&X, &data->common);
+    }
+
+
+    void
+    SparseCholesky::schur_complement(const std::vector<int>           &p,
+                                     const std::vector<int>           &i,
+                                     const std::vector<double>        &x,
+                                     dealii::LAPACKFullMatrix<double> &S) const
+    {
+      const cholmod_factor *A = data->factor;
+      if (A == nullptr || p.size() < data->n + 1)
+        throw std::logic_error(
+          "SparseCholesky::schur_complement: factorize the leading block "
+          "first");
+      const std::size_t n = p.size() - 1, n_A = data->n, n_c = n - n_A;
+
+      // A's fill-reducing order (which CHOLMOD has post-ordered), then the
+      // trailing rows; given as it is (no ordering, no post-ordering), so
+      // that the factor's last n_c columns are the trailing rows
+      std::vector<int> order(n);
+      const int       *perm = static_cast<const int *>(A->Perm);
+      for (std::size_t k = 0; k < n; ++k)
+        order[k] = k < n_A ? (perm != nullptr ? perm[k] : int(k)) : int(k);
+      cholmod_common common;
+      cholmod_start(&common);
+      common.print              = 0;
+      common.nmethods           = 1;
+      common.method[0].ordering = CHOLMOD_GIVEN;
+      common.postorder          = 0;
+      common.supernodal         = CHOLMOD_SUPERNODAL;
+      cholmod_sparse *M         = upper_triangle(p, i, x, common);
+      cholmod_factor *L =
+        cholmod_analyze_p(M, order.data(), nullptr, 0, &common);
+      if (L != nullptr)
+        cholmod_factorize(M, L, &common);
+      const bool factorised = L != nullptr && common.status == CHOLMOD_OK &&
+                              L->minor == n && L->is_super;
+      bool in_order = factorised;
+      for (std::size_t k = n_A; in_order && k < n; ++k)
+        in_order = static_cast<const int *>(L->Perm)[k] == int(k);
+
+      // L_cc: the rows and columns from n_A of the supernodal factor (each
+      // supernode a dense column-major block of its rows, its first rows
+      // its own columns)
+      dealii::LAPACKFullMatrix<double> L_cc(n_c, n_c);
+      if (in_order)
+        {
+          const int *super = static_cast<const int *>(L->super),
+                    *pi    = static_cast<const int *>(L->pi),
+                    *px    = static_cast<const int *>(L->px),
+                    *rows  = static_cast<const int *>(L->s);
+          const double *lx = static_cast<const double *>(L->x);
+          for (std::size_t k = 0; k < L->nsuper; ++k)
+            {
+              const int first = super[k], n_rows = pi[k + 1] - pi[k];
+              for (int j = std::max(first, int(n_A)); j < super[k + 1]; ++j)
+                for (int r = 0; r < n_rows; ++r)
+                  {
+                    const int row = rows[pi[k] + r];
+                    if (row >= j)
+                      L_cc(row - n_A, j - n_A) =
+                        lx[px[k] + r + std::size_t(j - first) * n_rows];
+                  }
+            }
+        }
+      cholmod_free_sparse(&M, &common);
+      if (L != nullptr)
+        cholmod_free_factor(&L, &common);
+      cholmod_finish(&common);
+      if (!factorised)
+        throw std::runtime_error(
+          "CHOLMOD: the matrix is not positive definite");
+      if (!in_order)
+        throw std::logic_error(
+          "CHOLMOD reordered the trailing rows of a given ordering");
+
+      S.reinit(n_c, n_c);
+      L_cc.mTmult(S, L_cc);
     }
 
 

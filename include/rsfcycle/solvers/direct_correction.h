@@ -15,12 +15,13 @@ namespace rsfcycle
      * Exact (sparse direct) linear correction. The Newton matrix differs
      * from A only in the contact block, so the free non-contact unknowns I
      * are eliminated once per step matrix: CHOLMOD factorises A_II (a sparse
-     * Cholesky factor, solvers/sparse_cholesky.h) and the
-     * dense Schur complement S = A_cc - A_cI A_II^{-1} A_Ic of all contact
-     * dofs c is formed (with Z = A_II^{-1} A_Ic, not kept). Each TNNMG
-     * iteration then costs two sparse back-substitutions (before and after)
-     * and one dense solve with S_aa + H_aa on the active (non-truncated)
-     * contact dofs a. The factorisations of the
+     * Cholesky factor, solvers/sparse_cholesky.h), and the dense Schur
+     * complement S = A_cc - A_cI A_II^{-1} A_Ic of all contact dofs c is
+     * L_cc L_cc^T from a second factorisation of A in A_II's order with the
+     * contact dofs last (SparseCholesky::schur_complement(), which is then
+     * freed). Each TNNMG iteration then costs two sparse back-substitutions
+     * (before and after) and one dense solve with S_aa + H_aa on the active
+     * (non-truncated) contact dofs a. The factorisations of the
      * last few step matrices are cached by TruncatedNewtonSystem::matrix_key.
      * Meant for 2D and small 3D meshes (S is dense).
      */

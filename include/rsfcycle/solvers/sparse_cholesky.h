@@ -3,6 +3,7 @@
 #define rsfcycle_solvers_sparse_cholesky_h
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
@@ -75,6 +76,23 @@ namespace rsfcycle
       /** x = A^{-1} b. */
       void
       solve(const dealii::Vector<double> &b, dealii::Vector<double> &x) const;
+
+      /**
+       * The Schur complement S = C - B^T A^{-1} B of this factor's matrix A
+       * (factorize() first) in the symmetric positive definite matrix
+       * M = [A B; B^T C], whose upper triangle is given in compressed
+       * columns as for factorize() (its leading columns those of A). M is
+       * factorised once more, in A's fill-reducing order with the trailing
+       * rows last, and S = L_cc L_cc^T from the trailing block L_cc of that
+       * factor (which is then freed): the cost of a factorisation and of
+       * one dense product of the trailing size, instead of one solve per
+       * trailing column.
+       */
+      void
+      schur_complement(const std::vector<int>           &p,
+                       const std::vector<int>           &i,
+                       const std::vector<double>        &x,
+                       dealii::LAPACKFullMatrix<double> &S) const;
 
       /** X = A^{-1} B for all columns of B (n x m, row-major in deal.II). */
       void

@@ -26,6 +26,9 @@ From the repository's root, with the package on the path:
            (rsfcycle.equal), the ratio of the costs into results.csv
   fd       the bp3-fd.* rows: a BP3-FD run's events, its first against
            BP3-QD's and coarser and finer BP3-FD runs' (--dry-run prints them)
+  schur    the direct correction's set-up (the contact dofs' Schur
+           complement) against a baseline binary: BP3-FD's first 2e5 s at
+           100 and 50 m (--cells), wall time and peak memory
   tandem   run tandem on BP3-QD (tandem/run.sh: builds it under
            TANDEM_PREFIX once, about 25 min, then meshes, runs, converts)
 
@@ -669,6 +672,65 @@ def runs_command(args):
     return 0
 
 
+# ------------------------------------------------------------------- schur
+
+SCHUR_END = 2e5  # s: BP3-FD's set-up and first steps, 9 to 11 step sizes
+
+
+def timed(command, log):
+    """Run `command` (output to `log`); (wall time [s], peak resident
+    memory [GB]) of that process alone."""
+    start = datetime.datetime.now()
+    with open(log, "w") as out:
+        child = subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT)
+        _, status, usage = os.wait4(child.pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        sys.exit(f"{' '.join(command)} failed (see {log})")
+    return ((datetime.datetime.now() - start).total_seconds(),
+            usage.ru_maxrss / 1024 ** 2)
+
+
+def schur_command(args):
+    """The `schur` command: BP3-FD's first SCHUR_END seconds, 60° thrust,
+    with --binary and --baseline in turn at each --cells; the rows
+    bp3-fd.schur.CELLSm (wall time and peak memory against the baseline's;
+    the end's maximum slip rate of the two must agree)."""
+    binaries = {"binary": os.path.abspath(args.binary),
+                "baseline": os.path.abspath(args.baseline)}
+    version = subprocess.run([binaries["baseline"], "--version"],
+                             capture_output=True, text=True).stdout
+    baseline = version.split("commit ")[-1].split(",")[0][:7]
+    base = os.path.join(ROOT, "prm", "seas-bp3-fd.prm")
+    context = results.run_context(ROOT)
+    if args.load:
+        context["load"] = args.load
+    rows = []
+    for cells in args.cells:
+        measured = {}
+        for name, binary in binaries.items():
+            folder = os.path.join(args.work, f"schur-{cells:g}m-{name}")
+            entries = variant_entries(60, "thrust", cells, "g1", 0, "fd")
+            entries["End time"] = f"{SCHUR_END:g}"
+            path = prm.variant(folder + ".prm", base, folder, entries)
+            wall, memory = timed([binary, "--force", path], folder + ".log")
+            v = run.time_series(folder)["max_slip_rate_m_per_s"].to_numpy()[-1]
+            measured[name] = (wall, memory, v)
+            print(f"{cells:g} m, {name}: {wall:.1f} s, {memory:.2f} GB")
+        (w1, m1, v1), (w0, m0, v0) = measured["binary"], measured["baseline"]
+        if abs(v1 - v0) > 1e-6 * abs(v0):
+            sys.exit(f"{cells:g} m: the maximum slip rates at the end differ "
+                     f"({v1:.9g} against {v0:.9g} m/s)")
+        rows.append((f"bp3-fd.schur.{cells:g}m", f"{w1 / w0:.3f}", "x",
+                     f"BP3-FD at {cells:g} m, its set-up and steps to "
+                     f"{SCHUR_END:g} s (a new step matrix at each new step "
+                     "size): wall time with the contact dofs' Schur "
+                     "complement from a factorisation with them last, against "
+                     f"one solve per contact dof ({baseline}): {w1:.1f} "
+                     f"against {w0:.1f} s; peak memory {m1:.2f} against "
+                     f"{m0:.2f} GB", context, 1))
+    return write_rows(rows, args.dry_run)
+
+
 # ------------------------------------------------------------------ tandem
 
 def tandem_command(args):
@@ -795,6 +857,22 @@ def main(argv=None):
     p.add_argument("--dry-run", action="store_true",
                    help="print the rows, write nothing")
     p.set_defaults(handler=fd_command)
+
+    p = sub.add_parser("schur", help="the direct correction's set-up "
+                       "against a baseline binary's: BP3-FD's first "
+                       f"{SCHUR_END:g} s at each --cells, one after the other")
+    p.add_argument("--baseline", required=True, help="the binary to compare "
+                   "with (one that solves once per contact dof)")
+    p.add_argument("--binary", default=os.path.join(ROOT, "build",
+                                                    "rsfcycle"))
+    p.add_argument("--cells", type=float, nargs="+", default=[100.0, 50.0])
+    p.add_argument("--work", default=os.path.join(HERE, "runs"),
+                   help="default benchmarks/seas-bp3/runs (git-ignored)")
+    p.add_argument("--load", help="the machine's load during the runs "
+                   "(default: measured before them)")
+    p.add_argument("--dry-run", action="store_true",
+                   help="print the rows, write nothing")
+    p.set_defaults(handler=schur_command)
 
     p = sub.add_parser("equal", help="the cost at equal accuracy against "
                        "HBI (each code's cheapest run with unchanged results)")

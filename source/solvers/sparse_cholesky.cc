@@ -347,6 +347,9 @@ namespace rsfcycle
           "SparseCholesky::schur_complement: factorize the leading block "
           "first");
       const std::size_t n = p.size() - 1, n_A = data->n, n_c = n - n_A;
+      S.reinit(n_c, n_c);
+      if (n_c == 0)
+        return;
 
       // A's fill-reducing order (which CHOLMOD has post-ordered), then the
       // trailing rows; given as it is (no ordering, no post-ordering), so
@@ -408,7 +411,6 @@ namespace rsfcycle
         throw std::logic_error(
           "CHOLMOD reordered the trailing rows of a given ordering");
 
-      S.reinit(n_c, n_c);
       L_cc.mTmult(S, L_cc);
     }
 

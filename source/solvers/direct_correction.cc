@@ -133,9 +133,8 @@ namespace rsfcycle
         {
           // (S_aa + H_aa) x_a = b_a - A_aI y, with S_aa + H_aa formed
           // directly in the LAPACK matrix (n_a is small: contact dofs only)
-          dealii::LAPACKFullMatrix<double> S(n_a, n_a);
-          dealii::Vector<double>           x_a(n_a);
-          std::vector<int> active_position(contact_dofs.size(), -1);
+          dealii::Vector<double> x_a(n_a);
+          std::vector<int>       active_position(contact_dofs.size(), -1);
           for (unsigned int p = 0; p < n_a; ++p)
             {
               active_position[active[p]] = p;
@@ -144,24 +143,50 @@ namespace rsfcycle
               for (unsigned int e = A.row_begin(row); e < A.row_end(row); ++e)
                 if (interior_index[A.column(e)] >= 0)
                   x_a[p] -= A.value(e) * y[interior_index[A.column(e)]];
-              for (unsigned int q = 0; q < n_a; ++q)
-                S(p, q) = f.schur(active[p], active[q]);
             }
-          // Hessian blocks of the active nodes.
-          for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+          const auto form = [&](dealii::LAPACKFullMatrix<double> &S) {
+            if (n_a == contact_dofs.size())
+              S = f.schur; // all active: one copy
+            else
+              {
+                S.reinit(n_a, n_a);
+                for (unsigned int p = 0; p < n_a; ++p)
+                  for (unsigned int q = 0; q < n_a; ++q)
+                    S(p, q) = f.schur(active[p], active[q]);
+              }
+            // Hessian blocks of the active nodes.
+            for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+              {
+                const ContactNode &node = contact.nodes[k];
+                for (unsigned int i = 0; i < node.n_dofs; ++i)
+                  for (unsigned int j = 0; j < node.n_dofs; ++j)
+                    {
+                      const int pi =
+                                  active_position[contact_index[node.dofs[i]]],
+                                pj =
+                                  active_position[contact_index[node.dofs[j]]];
+                      if (pi >= 0 && pj >= 0)
+                        S(pi, pj) +=
+                          (*system.node_hessians)[k][node.n_dofs * i + j];
+                    }
+              }
+          };
+          // S_aa is positive definite and the friction's Hessian (convex)
+          // positive semidefinite: Cholesky, half LU's work; LU should
+          // rounding make it fail
+          dealii::LAPACKFullMatrix<double> S;
+          form(S);
+          S.set_property(dealii::LAPACKSupport::symmetric);
+          try
             {
-              const ContactNode &node = contact.nodes[k];
-              for (unsigned int i = 0; i < node.n_dofs; ++i)
-                for (unsigned int j = 0; j < node.n_dofs; ++j)
-                  {
-                    const int pi = active_position[contact_index[node.dofs[i]]],
-                              pj = active_position[contact_index[node.dofs[j]]];
-                    if (pi >= 0 && pj >= 0)
-                      S(pi, pj) +=
-                        (*system.node_hessians)[k][node.n_dofs * i + j];
-                  }
+              S.compute_cholesky_factorization();
             }
-          S.compute_lu_factorization();
+          catch (const std::exception &)
+            {
+              form(S);
+              S.set_property(dealii::LAPACKSupport::general);
+              S.compute_lu_factorization();
+            }
           S.solve(x_a);
           for (unsigned int p = 0; p < n_a; ++p)
             x[contact_dofs[active[p]]] = x_a[p];

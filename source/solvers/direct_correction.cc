@@ -101,6 +101,40 @@ namespace rsfcycle
     }
 
 
+    void
+    DirectCorrection::contact_matrix(const Factorization             &f,
+                                     const TruncatedNewtonSystem     &system,
+                                     const std::vector<unsigned int> &active,
+                                     const std::vector<int> &active_position,
+                                     dealii::LAPACKFullMatrix<double> &S) const
+    {
+      const ContactSet  &contact = *system.contact;
+      const unsigned int n_a     = active.size();
+      if (n_a == contact_dofs.size())
+        S = f.schur; // all active: one copy
+      else
+        {
+          S.reinit(n_a, n_a);
+          for (unsigned int p = 0; p < n_a; ++p)
+            for (unsigned int q = 0; q < n_a; ++q)
+              S(p, q) = f.schur(active[p], active[q]);
+        }
+      // Hessian blocks of the active nodes.
+      for (unsigned int k = 0; k < contact.nodes.size(); ++k)
+        {
+          const ContactNode &node = contact.nodes[k];
+          for (unsigned int i = 0; i < node.n_dofs; ++i)
+            for (unsigned int j = 0; j < node.n_dofs; ++j)
+              {
+                const int pi = active_position[contact_index[node.dofs[i]]],
+                          pj = active_position[contact_index[node.dofs[j]]];
+                if (pi >= 0 && pj >= 0)
+                  S(pi, pj) += (*system.node_hessians)[k][node.n_dofs * i + j];
+              }
+        }
+    }
+
+
     unsigned int
     DirectCorrection::solve(const TruncatedNewtonSystem &system,
                             const la::Vector            &rhs,
@@ -108,7 +142,6 @@ namespace rsfcycle
     {
       const Factorization     &f         = factorization(system);
       const la::LocalMatrix   &A         = *system.local_A;
-      const ContactSet        &contact   = *system.contact;
       const std::vector<bool> &truncated = *system.truncated;
       const unsigned int       n_I       = interior.size();
 
@@ -144,38 +177,11 @@ namespace rsfcycle
                 if (interior_index[A.column(e)] >= 0)
                   x_a[p] -= A.value(e) * y[interior_index[A.column(e)]];
             }
-          const auto form = [&](dealii::LAPACKFullMatrix<double> &S) {
-            if (n_a == contact_dofs.size())
-              S = f.schur; // all active: one copy
-            else
-              {
-                S.reinit(n_a, n_a);
-                for (unsigned int p = 0; p < n_a; ++p)
-                  for (unsigned int q = 0; q < n_a; ++q)
-                    S(p, q) = f.schur(active[p], active[q]);
-              }
-            // Hessian blocks of the active nodes.
-            for (unsigned int k = 0; k < contact.nodes.size(); ++k)
-              {
-                const ContactNode &node = contact.nodes[k];
-                for (unsigned int i = 0; i < node.n_dofs; ++i)
-                  for (unsigned int j = 0; j < node.n_dofs; ++j)
-                    {
-                      const int pi =
-                                  active_position[contact_index[node.dofs[i]]],
-                                pj =
-                                  active_position[contact_index[node.dofs[j]]];
-                      if (pi >= 0 && pj >= 0)
-                        S(pi, pj) +=
-                          (*system.node_hessians)[k][node.n_dofs * i + j];
-                    }
-              }
-          };
           // S_aa is positive definite and the friction's Hessian (convex)
           // positive semidefinite: Cholesky, half LU's work; LU should
           // rounding make it fail
           dealii::LAPACKFullMatrix<double> S;
-          form(S);
+          contact_matrix(f, system, active, active_position, S);
           S.set_property(dealii::LAPACKSupport::symmetric);
           try
             {
@@ -183,7 +189,7 @@ namespace rsfcycle
             }
           catch (const std::exception &)
             {
-              form(S);
+              contact_matrix(f, system, active, active_position, S);
               S.set_property(dealii::LAPACKSupport::general);
               S.compute_lu_factorization();
             }

@@ -2,6 +2,7 @@
 #ifndef rsfcycle_solvers_direct_correction_h
 #define rsfcycle_solvers_direct_correction_h
 
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
 #include <rsfcycle/solvers/spatial_problem.h>
@@ -40,6 +41,19 @@ namespace rsfcycle
       struct Factorization;
       const Factorization &
       factorization(const TruncatedNewtonSystem &system);
+
+      /**
+       * S_aa + H_aa into S: f's Schur complement on the active contact dofs
+       * (their positions in contact_dofs; active_position: each contact
+       * dof's position among them, -1 if truncated) and the friction's
+       * Hessian blocks of the active nodes.
+       */
+      void
+      contact_matrix(const Factorization              &f,
+                     const TruncatedNewtonSystem      &system,
+                     const std::vector<unsigned int>  &active,
+                     const std::vector<int>           &active_position,
+                     dealii::LAPACKFullMatrix<double> &S) const;
 
       std::vector<std::unique_ptr<Factorization>> cache;
       std::vector<global_dof_index>               interior, contact_dofs;

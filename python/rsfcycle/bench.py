@@ -19,6 +19,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -196,15 +197,30 @@ def run_variant(exe, base, folder, entries=None, ranks=1, log=None):
     with `entries`, its output folder FOLDER) and run `exe --force` on it
     on `ranks` MPI ranks, the screen output to `log` (default FOLDER.log).
     FOLDER/run-context.json then keeps the commit, the date and the load
-    measured before the run started, and the ranks (context_of reads it).
-    Returns the wall time [s]."""
+    measured before the run started, and the ranks (context_of reads it),
+    also when the run was stopped by Ctrl-C or SIGTERM (it has written its
+    checkpoint: `rsfcycle --resume FOLDER` goes on). Returns the wall time
+    [s]; raises CalledProcessError if the run failed."""
     folder = os.path.abspath(folder)
     path = prm.variant(folder + ".prm", base, folder, entries)
     context = results.run_context(ROOT)
     command = [exe, "--force", path]
     if ranks > 1:
         command = mpirun(ranks, command)
-    seconds, _ = run(command, log or folder + ".log", env=mpi_environment())
+    # Ctrl-C at the terminal reaches rsfcycle, which writes its checkpoint
+    # and stops; this process waits for it instead of stopping first (its
+    # handler is not inherited by rsfcycle)
+    previous = signal.signal(signal.SIGINT, lambda number, frame: None)
+    try:
+        seconds, status = run(command, log or folder + ".log",
+                              env=mpi_environment(), check=False)
+    finally:
+        signal.signal(signal.SIGINT, previous)
+    stopped = status in (128 + signal.SIGINT, 128 + signal.SIGTERM)
+    if status != 0 and not stopped:
+        raise subprocess.CalledProcessError(status, command)
+    if stopped:
+        print(f"{folder}: stopped; rsfcycle --resume {folder} goes on")
     context["cores"] = ranks
     with open(os.path.join(folder, "run-context.json"), "w",
               encoding="utf-8") as f:

@@ -489,6 +489,9 @@ def fd_rows(args):
             # the finer run need only have ended its first event
             other.events = [e for e in other.events
                             if e.end < other.t_last - FD_MERGE]
+            if not other.events:
+                sys.exit(f"{flag}: its first event has not ended an hour "
+                         "before the run's end (rsfcycle --resume it)")
         if not other.events:
             continue
         o = other.events[0]

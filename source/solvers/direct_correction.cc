@@ -88,6 +88,8 @@ namespace rsfcycle
             }
           p.push_back(i.size());
         }
+      // A_II's own factor for the solves: M's (below) also holds the dense
+      // L_cc, which every back-substitution would have to pass
       f->cholesky.factorize(std::vector<int>(p.begin(), p.begin() + n_I + 1),
                             std::vector<int>(i.begin(), i.begin() + p[n_I]),
                             std::vector<double>(x.begin(), x.begin() + p[n_I]));
@@ -180,7 +182,9 @@ namespace rsfcycle
           // S_aa is positive definite and the friction's Hessian (convex)
           // positive semidefinite: Cholesky, half LU's work; LU should
           // rounding make it fail
-          dealii::LAPACKFullMatrix<double> S;
+          // (the work matrix keeps its memory from one iteration to the
+          // next: n_a^2 doubles, 80 MB for BP3-FD at 25 m)
+          dealii::LAPACKFullMatrix<double> &S = contact_work;
           contact_matrix(f, system, active, active_position, S);
           S.set_property(dealii::LAPACKSupport::symmetric);
           try

@@ -59,7 +59,8 @@ namespace rsfcycle
       std::vector<global_dof_index>               interior, contact_dofs;
       std::vector<int> interior_index; // dof -> index in interior, or -1
       std::vector<int> contact_index;  // dof -> index in contact_dofs, or -1
-      dealii::Vector<double> b_I, y;   // work vectors of solve()
+      dealii::Vector<double>           b_I, y;       // work vectors of solve()
+      dealii::LAPACKFullMatrix<double> contact_work; // S_aa + H_aa, factorised
     };
   } // namespace solvers
 } // namespace rsfcycle

@@ -468,8 +468,12 @@ def fd_rows(args):
         add("bp3-fd.cost", *bench.duration(wall),
             f"BP3-FD: wall time to {fd.t_last / YEAR:.0f} yr, one rank "
             "(resumed segments summed)")
-    add("bp3-fd.peer", "none", "", "BP3-FD: no peer run; rsfcycle's "
-        "BP3-QD and coarser and finer runs instead")
+    others = [f"{element_size(f) or 0:g} m" for f in (args.coarse, args.fine)
+              if f]
+    add("bp3-fd.peer", "none" + ("; runs at " + " and ".join(others)
+                                 if others else ""), "",
+        "BP3-FD: no peer run; rsfcycle's BP3-QD and coarser and finer runs "
+        "instead")
     intervals = catalog.intervals(fd.events)
     add("bp3-fd.recurrence", "no peer; intervals " + ", ".join(
         f"{x / YEAR:.2f}" for x in intervals) + " yr" if intervals else

@@ -62,6 +62,8 @@ YEAR = 3.1536e7  # 365 days: BP3's year, prm/seas-bp3-qd.prm's End time
 THRESHOLD = 1e-3  # m/s, the SEAS event threshold
 MERGE = 60.0  # s
 FD_MERGE = 3600.0  # s: prm/seas-bp3-fd.prm's Event merge time
+FRONT = 4.0  # s: the rupture front at a fault station, before later pulses
+FRONT_ONSET = 0.01  # m/s: the slip rate that marks the front's arrival
 SPONGE_WINDOW = 100.0  # s: the surface slip compared with and without it
 SURFACE_SLIP = 0.01  # m: an event that slips the surface by more ruptures it
 COARSE = 800.0  # m: the fault's cells of prm/meshes/seas-bp3-*.msh
@@ -116,6 +118,17 @@ def surface(folder, x):
 def at(rows, t, column):
     """A column of rows interpolated linearly at time t."""
     return float(np.interp(t, rows[:, 0], rows[:, column]))
+
+
+def station_peak(rows, event, front=None):
+    """A fault station's peak slip rate [m/s] over an event, or over the
+    `front` seconds after its slip rate first exceeds FRONT_ONSET."""
+    inside = (rows[:, 0] >= event.start - 1) & (rows[:, 0] <= event.end)
+    t, v = rows[inside, 0], 10 ** rows[inside, 2]
+    if front is not None:
+        onset = t[np.argmax(v > FRONT_ONSET)]
+        v = v[(t >= onset) & (t <= onset + front)]
+    return float(v.max())
 
 
 def change(rows, event, column):
@@ -533,6 +546,26 @@ def fd_rows(args):
             add(f"bp3-fd.{key}.jump", signed(percent(first.jump, o.jump), 2),
                 "%", f"BP3-FD's first event's slip at the surface against "
                 f"{label} ({first.jump:.3f} against {o.jump:.3f} m)", ctx)
+        if key != "qd" and fd.deep is not None and other.deep is not None:
+            # below the surface, where the fault meets no free edge
+            ours, theirs = ((station_peak(r.deep, e), change(r.deep, e, 1),
+                             station_peak(r.deep, e, FRONT))
+                            for r, e in ((fd, first), (other, o)))
+            add(f"bp3-fd.{key}.peak_10km",
+                signed(percent(ours[0], theirs[0]), 1), "%",
+                "BP3-FD's first event's peak slip rate 10 km down dip "
+                f"against {label} ({ours[0]:.2f} against {theirs[0]:.2f} "
+                "m/s)", ctx)
+            add(f"bp3-fd.{key}.front_10km",
+                signed(percent(ours[2], theirs[2]), 1), "%",
+                "BP3-FD's first event's peak slip rate 10 km down dip in the "
+                f"rupture front (the {FRONT:g} s after its slip rate exceeds "
+                f"{100 * FRONT_ONSET:g} cm/s) against {label} ({ours[2]:.2f} "
+                f"against {theirs[2]:.2f} m/s)", ctx)
+            add(f"bp3-fd.{key}.slip_10km",
+                signed(percent(ours[1], theirs[1]), 2), "%",
+                "BP3-FD's first event's slip 10 km down dip against "
+                f"{label} ({ours[1]:.3f} against {theirs[1]:.3f} m)", ctx)
     back = explicit_until(fd.folder, first)
     add("bp3-fd.explicit_until", f"{back:.0f}", "s", "BP3-FD: the first "
         "event's explicit steps end this long after its start (then the "

@@ -121,14 +121,17 @@ def at(rows, t, column):
 
 
 def station_peak(rows, event, front=None):
-    """A fault station's peak slip rate [m/s] over an event, or over the
-    `front` seconds after its slip rate first exceeds FRONT_ONSET."""
+    """A fault station's peak slip rate [m/s] over an event, or (peak,
+    slip [m]) over the `front` seconds after its slip rate first exceeds
+    FRONT_ONSET."""
     inside = (rows[:, 0] >= event.start - 1) & (rows[:, 0] <= event.end)
     t, v = rows[inside, 0], 10 ** rows[inside, 2]
-    if front is not None:
-        onset = t[np.argmax(v > FRONT_ONSET)]
-        v = v[(t >= onset) & (t <= onset + front)]
-    return float(v.max())
+    if front is None:
+        return float(v.max())
+    onset = t[np.argmax(v > FRONT_ONSET)]
+    window = (t >= onset) & (t <= onset + front)
+    return (float(v[window].max()),
+            at(rows, onset + front, 1) - at(rows, onset, 1))
 
 
 def change(rows, event, column):
@@ -549,7 +552,7 @@ def fd_rows(args):
         if key != "qd" and fd.deep is not None and other.deep is not None:
             # below the surface, where the fault meets no free edge
             ours, theirs = ((station_peak(r.deep, e), change(r.deep, e, 1),
-                             station_peak(r.deep, e, FRONT))
+                             *station_peak(r.deep, e, FRONT))
                             for r, e in ((fd, first), (other, o)))
             add(f"bp3-fd.{key}.peak_10km",
                 signed(percent(ours[0], theirs[0]), 1), "%",
@@ -562,6 +565,11 @@ def fd_rows(args):
                 f"rupture front (the {FRONT:g} s after its slip rate exceeds "
                 f"{100 * FRONT_ONSET:g} cm/s) against {label} ({ours[2]:.2f} "
                 f"against {theirs[2]:.2f} m/s)", ctx)
+            add(f"bp3-fd.{key}.front_slip_10km",
+                signed(percent(ours[3], theirs[3]), 2), "%",
+                "BP3-FD's first event's slip 10 km down dip in the rupture "
+                f"front's {FRONT:g} s against {label} ({ours[3]:.3f} against "
+                f"{theirs[3]:.3f} m)", ctx)
             add(f"bp3-fd.{key}.slip_10km",
                 signed(percent(ours[1], theirs[1]), 2), "%",
                 "BP3-FD's first event's slip 10 km down dip against "

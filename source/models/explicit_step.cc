@@ -116,10 +116,13 @@ namespace rsfcycle
             else
               mass[i] += M.value(j);
           for (unsigned int j = C.row_begin(i); j < C.row_end(i); ++j)
-            if (C.column(j) == i)
-              damping[i] = C.value(j);
-            else if (paired(i) && C.column(j) == partner[i])
-              damping_coupling[i] = C.value(j);
+            {
+              damped = damped || C.value(j) != 0;
+              if (C.column(j) == i)
+                damping[i] = C.value(j);
+              else if (paired(i) && C.column(j) == partner[i])
+                damping_coupling[i] = C.value(j);
+            }
         }
       on_contact.assign(n, false);
       for (const auto &node : contact.contact_set().nodes)
@@ -141,6 +144,8 @@ namespace rsfcycle
           mass_diagonal.update_ghost_values();
           damping_diagonal.update_ghost_values();
         }
+      damped = dealii::Utilities::MPI::logical_or(
+        damped, discretisation.triangulation.get_communicator());
       find_blocks();
       discretisation.reinit(damping_force);
       const auto [lambda, h] = largest_cell_eigenvalue(discretisation);
@@ -198,8 +203,11 @@ namespace rsfcycle
       la::Vector r;
       r.reinit(load, true);
       discretisation.stiffness_local.residual(r, next.u, load);
-      discretisation.viscosity_local.vmult(damping_force, v_star);
-      r -= damping_force;
+      if (damped)
+        {
+          discretisation.viscosity_local.vmult(damping_force, v_star);
+          r -= damping_force;
+        }
       const unsigned int n = mass.size();
 
       const bool split = !partner.empty();

@@ -227,6 +227,12 @@ namespace rsfcycle
       std::vector<bool> single;
       /** C v* of a stage. */
       la::Vector damping_force;
+      /**
+       * Whether C has an entry other than zero on some rank: an elastic
+       * body (no viscosity, no sponge) skips the product C v*, which
+       * would cost as much as K u in each stage.
+       */
+      bool       damped = false;
       la::Vector mass_diagonal, damping_diagonal, rho_pairs;
       double     stable = 0, h_min = 0;
       /** Noh and Bathe's p (0: central differences). */

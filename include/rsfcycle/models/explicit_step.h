@@ -229,8 +229,8 @@ namespace rsfcycle
       la::Vector damping_force;
       /**
        * Whether C has an entry other than zero on some rank: an elastic
-       * body (no viscosity, no sponge) skips the product C v*, which
-       * would cost as much as K u in each stage.
+       * body (no viscosity, no sponge) skips the product C v*, a sparse
+       * product the size of K u in each stage.
        */
       bool       damped = false;
       la::Vector mass_diagonal, damping_diagonal, rho_pairs;

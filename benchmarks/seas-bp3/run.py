@@ -120,18 +120,16 @@ def at(rows, t, column):
     return float(np.interp(t, rows[:, 0], rows[:, column]))
 
 
-def station_peak(rows, event, front=None):
-    """A fault station's peak slip rate [m/s] over an event, or (peak,
-    slip [m]) over the `front` seconds after its slip rate first exceeds
-    FRONT_ONSET."""
+def deep_figures(rows, event):
+    """A fault station's figures over an event: (peak slip rate [m/s],
+    slip [m], and both over the rupture front: the FRONT seconds after
+    its slip rate first exceeds FRONT_ONSET)."""
     inside = (rows[:, 0] >= event.start - 1) & (rows[:, 0] <= event.end)
     t, v = rows[inside, 0], 10 ** rows[inside, 2]
-    if front is None:
-        return float(v.max())
     onset = t[np.argmax(v > FRONT_ONSET)]
-    window = (t >= onset) & (t <= onset + front)
-    return (float(v[window].max()),
-            at(rows, onset + front, 1) - at(rows, onset, 1))
+    front = (t >= onset) & (t <= onset + FRONT)
+    return (float(v.max()), change(rows, event, 1), float(v[front].max()),
+            at(rows, onset + FRONT, 1) - at(rows, onset, 1))
 
 
 def change(rows, event, column):
@@ -551,29 +549,21 @@ def fd_rows(args):
                 f"{label} ({first.jump:.3f} against {o.jump:.3f} m)", ctx)
         if key != "qd" and fd.deep is not None and other.deep is not None:
             # below the surface, where the fault meets no free edge
-            ours, theirs = ((station_peak(r.deep, e), change(r.deep, e, 1),
-                             *station_peak(r.deep, e, FRONT))
+            ours, theirs = (deep_figures(r.deep, e)
                             for r, e in ((fd, first), (other, o)))
-            add(f"bp3-fd.{key}.peak_10km",
-                signed(percent(ours[0], theirs[0]), 1), "%",
-                "BP3-FD's first event's peak slip rate 10 km down dip "
-                f"against {label} ({ours[0]:.2f} against {theirs[0]:.2f} "
-                "m/s)", ctx)
-            add(f"bp3-fd.{key}.front_10km",
-                signed(percent(ours[2], theirs[2]), 1), "%",
-                "BP3-FD's first event's peak slip rate 10 km down dip in the "
-                f"rupture front (the {FRONT:g} s after its slip rate exceeds "
-                f"{100 * FRONT_ONSET:g} cm/s) against {label} ({ours[2]:.2f} "
-                f"against {theirs[2]:.2f} m/s)", ctx)
-            add(f"bp3-fd.{key}.front_slip_10km",
-                signed(percent(ours[3], theirs[3]), 2), "%",
-                "BP3-FD's first event's slip 10 km down dip in the rupture "
-                f"front's {FRONT:g} s against {label} ({ours[3]:.3f} against "
-                f"{theirs[3]:.3f} m)", ctx)
-            add(f"bp3-fd.{key}.slip_10km",
-                signed(percent(ours[1], theirs[1]), 2), "%",
-                "BP3-FD's first event's slip 10 km down dip against "
-                f"{label} ({ours[1]:.3f} against {theirs[1]:.3f} m)", ctx)
+            front = (f"in the rupture front (the {FRONT:g} s after its slip "
+                     f"rate exceeds {100 * FRONT_ONSET:g} cm/s) ")
+            for k, name, digits, what, unit, fmt in (
+                    (0, "peak_10km", 1, "peak slip rate", "m/s", ".2f"),
+                    (2, "front_10km", 1, "peak slip rate", "m/s", ".2f"),
+                    (3, "front_slip_10km", 2, "slip", "m", ".3f"),
+                    (1, "slip_10km", 2, "slip", "m", ".3f")):
+                where = front if name.startswith("front") else ""
+                add(f"bp3-fd.{key}.{name}",
+                    signed(percent(ours[k], theirs[k]), digits), "%",
+                    f"BP3-FD's first event's {what} 10 km down dip {where}"
+                    f"against {label} ({ours[k]:{fmt}} against "
+                    f"{theirs[k]:{fmt}} {unit})", ctx)
     back = explicit_until(fd.folder, first)
     add("bp3-fd.explicit_until", f"{back:.0f}", "s", "BP3-FD: the first "
         "event's explicit steps end this long after its start (then the "
